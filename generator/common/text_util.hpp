@@ -1,0 +1,19 @@
+#pragma once
+// Small text helpers for error messages.
+#include <string>
+#include <vector>
+
+namespace arbor {
+
+bool endsWith(const std::string& s, const std::string& suffix);
+
+// Shortest text that reads back as the same number ("0.1", "3", "1e-05").
+std::string formatNumber(double x);
+
+// The known name closest to `name` by edit distance, or "" when nothing is close.
+std::string closestName(const std::string& name, const std::vector<std::string>& known);
+
+// The last "key": seen before byte `at` of a JSON text, for naming the field a parse error sits in.
+std::string lastJsonKeyBefore(const std::string& text, std::size_t at);
+
+}  // namespace arbor

@@ -1,0 +1,48 @@
+#include "assets.hpp"
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <unistd.h>
+
+namespace arbor::cli {
+
+namespace fs = std::filesystem;
+
+std::string assetDirectory() {
+  if (const char* env = std::getenv("ARBOR_ASSETS"); env && *env) return env;
+  if (fs::is_directory(fs::path(ARBOR_ASSET_DIR) / "presets")) return ARBOR_ASSET_DIR;
+  std::error_code ec;
+  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+  if (!ec) {
+    for (const fs::path& candidate : {exe.parent_path() / "assets", exe.parent_path().parent_path() / "assets"}) {
+      if (fs::is_directory(candidate / "presets")) return candidate.string();
+    }
+  }
+  return ARBOR_ASSET_DIR;
+}
+
+std::vector<std::string> presetNames() {
+  std::vector<std::string> names;
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(fs::path(assetDirectory()) / "presets", ec)) {
+    if (entry.path().extension() == ".json") names.push_back(entry.path().stem().string());
+  }
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+SpeciesParams loadSpeciesArgument(const std::string& presetOrFile, ImportNotes* notes) {
+  if (fs::exists(presetOrFile)) return loadSpeciesFile(presetOrFile, notes);
+  const fs::path preset = fs::path(assetDirectory()) / "presets" / (presetOrFile + ".json");
+  if (fs::exists(preset)) {
+    SpeciesParams p = loadSpeciesFile(preset.string(), notes);
+    return p;
+  }
+  std::string list;
+  for (const std::string& name : presetNames()) list += (list.empty() ? "" : ", ") + name;
+  throw SpeciesError(presetOrFile, "(argument)",
+                     "is neither a species file (.json, .xml) nor a preset; presets: " + list);
+}
+
+}  // namespace arbor::cli

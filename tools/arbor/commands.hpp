@@ -1,0 +1,21 @@
+#pragma once
+// Each subcommand registers itself on the CLI and sets the action main() runs after parsing.
+#include <CLI/CLI.hpp>
+#include <functional>
+
+namespace arbor::cli {
+
+using Action = std::function<int()>;
+
+// Exit codes: 0 success, 1 a failure while running (I/O), 2 bad input or usage.
+constexpr int kExitFailure = 1;
+constexpr int kExitBadInput = 2;
+
+void addGenerateCommand(CLI::App& app, Action& action);
+void addSpeciesCommand(CLI::App& app, Action& action);
+void addBenchCommand(CLI::App& app, Action& action);
+
+// Runs an action, turning the project's exceptions into messages and exit codes.
+int runGuarded(const Action& action);
+
+}  // namespace arbor::cli

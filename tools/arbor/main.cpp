@@ -1,0 +1,50 @@
+// arbor: one program, one subcommand per job (generate, species, bench; render and view come later).
+#include <cstdio>
+#include <iostream>
+
+#include "commands.hpp"
+#include "growth/weber_penn.hpp"
+#include "species/species_io.hpp"
+
+namespace arbor::cli {
+
+int runGuarded(const Action& action) {
+  try {
+    return action();
+  } catch (const SpeciesError& e) {
+    std::fprintf(stderr, "arbor: error: %s\n", e.what());
+    return kExitBadInput;
+  } catch (const GenerationError& e) {
+    std::fprintf(stderr, "arbor: error: %s\n", e.what());
+    return kExitBadInput;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "arbor: error: %s\n", e.what());
+    return kExitFailure;
+  }
+}
+
+}  // namespace arbor::cli
+
+int main(int argc, char** argv) {
+  using namespace arbor::cli;
+  CLI::App app{"Arbor: Weber-Penn trees as one connected quad mesh, refined by GPU tessellation.", "arbor"};
+  app.set_version_flag("--version", std::string("arbor ") + ARBOR_VERSION);
+  app.require_subcommand(1);
+  Action action;
+  addGenerateCommand(app, action);
+  addSpeciesCommand(app, action);
+  addBenchCommand(app, action);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::fprintf(stderr, "arbor: usage error: %s\nRun 'arbor --help' or 'arbor <command> --help'.\n", e.what());
+    return kExitBadInput;
+  }
+  return action ? runGuarded(action) : kExitBadInput;
+}

@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages Arbor builds, tests and runs with; skips what is already there.
+set -euo pipefail
+
+packages=(
+  build-essential cmake pkg-config
+  mesa-vulkan-drivers libvulkan-dev vulkan-validationlayers vulkan-tools glslang-tools spirv-tools
+  libglfw3-dev libglm-dev libosd-dev libstb-dev catch2
+  nlohmann-json3-dev libtinyxml2-dev libtinygltf-dev libcli11-dev libimgui-dev
+  xvfb xauth
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+
+# node and npm may come from elsewhere (nodesource bundles npm); only ask Debian when the commands are absent
+command -v node >/dev/null 2>&1 || missing+=(nodejs)
+command -v npm >/dev/null 2>&1 || missing+=(npm)
+
+if ((${#missing[@]})); then
+  echo "arbor: installing ${#missing[@]} missing packages: ${missing[*]}"
+  sudo_cmd=()
+  [[ $(id -u) -eq 0 ]] || sudo_cmd=(sudo)
+  export DEBIAN_FRONTEND=noninteractive
+  "${sudo_cmd[@]}" apt-get update -qq
+  "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
+else
+  echo "arbor: all system packages present"
+fi
