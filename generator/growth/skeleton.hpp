@@ -54,8 +54,7 @@ struct SkeletonStem {
 
 struct Leaf {
   std::int32_t stem = -1;
-  std::int32_t node = -1;   // node the leaf is attached relative to
-  Transform local;          // relative to that node
+  std::int32_t node = -1;   // node the leaf hangs from (it follows that node's deflections)
   Vec3 position{};          // object space: base of the blade
   Vec3 direction{};         // along the blade, from base to tip
   Vec3 normal{};            // face normal of the blade

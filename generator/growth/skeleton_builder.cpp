@@ -40,6 +40,7 @@ class Builder {
 
   void run() {
     attachNode_.assign(raw_.stems.size(), -1);
+    rawFrame_.reserve(out_.nodes.capacity());
     maybeAddRoot();
     for (std::size_t i = 0; i < raw_.stems.size(); ++i) buildStem(static_cast<int>(i));
     addLeaves();
@@ -201,14 +202,21 @@ class Builder {
   // Leaves hang from the last node at or below them on their stem, so they follow its deflections.
   void addLeaves() {
     out_.leaves.reserve(raw_.leaves.size());
+    int cursorStem = -1, cursor = -1;  // leaves of a stem arrive in z order: walk its nodes once
+    int deltaNode = -1;
+    Transform delta;
     for (const RawLeaf& rl : raw_.leaves) {
       const RawStem& st = raw_.stems[static_cast<std::size_t>(rl.stem)];
       const SkeletonStem& stem = out_.stems[static_cast<std::size_t>(rl.stem)];
-      int node = stem.attachNode;
-      for (int i = stem.firstNode; i < stem.firstNode + stem.nodeCount; ++i) {
-        if (out_.nodes[static_cast<std::size_t>(i)].offset <= rl.z) node = i;
-        else break;
+      if (rl.stem != cursorStem || (cursor >= stem.firstNode && out_.nodes[static_cast<std::size_t>(cursor)].offset > rl.z)) {
+        cursorStem = rl.stem;
+        cursor = stem.attachNode;
       }
+      const int end = stem.firstNode + stem.nodeCount;
+      for (int i = std::max(cursor + 1, stem.firstNode); i < end && out_.nodes[static_cast<std::size_t>(i)].offset <= rl.z; ++i) {
+        cursor = i;
+      }
+      const int node = cursor;
       const Transform segment = st.frameAt(st.segmentOf(rl.z), rl.z);
       const Quat rotation = segment.rotation * rl.rotation;
       const Vec3 blade = rotation * Vec3(0, 0, 1);
@@ -222,9 +230,13 @@ class Builder {
       Leaf leaf;
       leaf.stem = rl.stem;
       leaf.node = node;
-      const Transform& reference = node >= 0 ? rawFrame_[static_cast<std::size_t>(node)] : Transform{};
-      leaf.local = compose(inverse(reference), rawLeaf);
-      const Transform world = node >= 0 ? compose(out_.nodes[static_cast<std::size_t>(node)].world, leaf.local) : rawLeaf;
+      if (node != deltaNode) {  // how deflections moved this node: applied to every leaf hanging from it
+        deltaNode = node;
+        delta = compose(out_.nodes[static_cast<std::size_t>(node)].world, inverse(rawFrame_[static_cast<std::size_t>(node)]));
+      }
+      Transform world = compose(delta, rawLeaf);
+      // Show the upper face to the sky: half a turn about the blade where the normal points down.
+      if ((world.rotation * Vec3(0, 1, 0)).z < 0.0) world.rotation = world.rotation * Quat(0.0, 0.0, 0.0, 1.0);
       leaf.position = world.position;
       leaf.direction = world.rotation * Vec3(0, 0, 1);
       leaf.normal = world.rotation * Vec3(0, 1, 0);

@@ -43,6 +43,8 @@ class Grower {
       : p_(p), options_(o), tree_(tree), levels_(o.levels > 0 ? o.levels : p.levels), E_(p.treeShapeExponent) {}
 
   void run() {
+    tree_.stems.reserve(1024);
+    tree_.leaves.reserve(4096);
     growTrunks();
     // Breadth-first: every stem of level n exists before any of level n + 1.
     std::size_t levelBegin = 0;
@@ -96,25 +98,21 @@ class Grower {
     return glm::angleAxis(angle, axis / axisLength) * q;
   }
 
-  Grown growGeometry(std::uint64_t key, int level, const Transform& base, double length, int firstSegment,
-                     double splitError) {
+  // Walks one stem's segments: curvature, attraction and clone splits. onJoint(frame) sees each segment end
+  // and may stop the walk by returning false; onClone(key, base, firstSegment, splitError) sees each clone.
+  template <class OnJoint, class OnClone>
+  bool walkStem(std::uint64_t key, int level, const Transform& base, double length, int firstSegment,
+                double splitError, OnJoint&& onJoint, OnClone&& onClone) const {
     const StemLevelParams& lp = p_.level(level);
     Rng rng(key, kStreamGeometry);
-    Grown g;
-    g.key = key;
-    g.firstSegment = firstSegment;
-    g.base = base;
     const double segLength = length / lp.curveRes;
     Transform frame = base;
     for (int s = firstSegment; s < lp.curveRes; ++s) {
       const Vec3 end = frame.position + frame.direction() * segLength;
-      if (s == lp.curveRes - 1) {
-        g.joints.push_back(Transform{end, frame.rotation});  // tip keeps the arriving direction
-        break;
-      }
+      if (s == lp.curveRes - 1) return onJoint(Transform{end, frame.rotation});  // tip keeps the arriving direction
       Quat next = frame.rotation * rotationX(curveAngle(lp, s + 1, rng));
       if (level >= 2 && p_.attractionUp != 0.0) next = attract(next, lp.curveRes);
-      g.joints.push_back(Transform{end, next});
+      if (!onJoint(Transform{end, next})) return false;
 
       int splits = 0;
       if (level == 0 && s == 0 && firstSegment == 0 && p_.baseSplits > 0) {
@@ -124,7 +122,6 @@ class Grower {
         splitError += lp.segSplits - splits;
       }
       if (splits > 0) {
-        g.split = true;
         const int n = splits + 1;
         const double spin = rng.uniform() * 2.0 * kPi;
         for (int i = 0; i < n; ++i) {
@@ -134,32 +131,58 @@ class Grower {
           const double psi = spin + 2.0 * kPi * i / n;
           // Tilt by theta towards azimuth psi without spinning the clone's frame about its own axis.
           const Quat tilt = rotationZ(psi) * rotationX(theta) * rotationZ(-psi);
-          const Transform cloneBase{end, next * tilt};
-          g.clones.push_back(growGeometry(childKey(key, kKeyClone, static_cast<std::uint64_t>(s) * 64 + i), level,
-                                          cloneBase, length, s + 1, splitError));
+          const std::uint64_t cloneKey = childKey(key, kKeyClone, static_cast<std::uint64_t>(s) * 64 + i);
+          if (!onClone(cloneKey, Transform{end, next * tilt}, s + 1, splitError)) return false;
         }
-        break;
+        return true;
       }
       frame = Transform{end, next};
     }
+    return true;
+  }
+
+  Grown growGeometry(std::uint64_t key, int level, const Transform& base, double length, int firstSegment,
+                     double splitError) const {
+    Grown g;
+    g.key = key;
+    g.firstSegment = firstSegment;
+    g.base = base;
+    g.joints.reserve(static_cast<std::size_t>(p_.level(level).curveRes - firstSegment));
+    walkStem(
+        key, level, base, length, firstSegment, splitError,
+        [&g](const Transform& joint) {
+          g.joints.push_back(joint);
+          return true;
+        },
+        [&](std::uint64_t cloneKey, const Transform& cloneBase, int cloneFirst, double cloneError) {
+          g.split = true;
+          g.clones.push_back(growGeometry(cloneKey, level, cloneBase, length, cloneFirst, cloneError));
+          return true;
+        });
     return g;
   }
 
-  bool fitsEnvelope(const Grown& g) const {
-    for (const Transform& j : g.joints) {
-      if (!wp::insideEnvelope(p_, tree_.treeScale, j.position.x, j.position.y, j.position.z)) return false;
-    }
-    return std::all_of(g.clones.begin(), g.clones.end(), [this](const Grown& c) { return fitsEnvelope(c); });
+  // Whether every segment end of the stem and its clones lies in the envelope; stops at the first outside.
+  bool fitsEnvelope(std::uint64_t key, int level, const Transform& base, double length, int firstSegment,
+                    double splitError) const {
+    return walkStem(
+        key, level, base, length, firstSegment, splitError,
+        [this](const Transform& joint) {
+          return wp::insideEnvelope(p_, tree_.treeScale, joint.position.x, joint.position.y, joint.position.z);
+        },
+        [&](std::uint64_t cloneKey, const Transform& cloneBase, int cloneFirst, double cloneError) {
+          return fitsEnvelope(cloneKey, level, cloneBase, length, cloneFirst, cloneError);
+        });
   }
 
   // Weber-Penn pruning: the longest length that fits the envelope, blended with the original by PruneRatio.
   double prunedLength(std::uint64_t key, int level, const Transform& base, double length) {
     if (p_.pruneRatio <= 0.0 || level == 0) return length;
-    if (fitsEnvelope(growGeometry(key, level, base, length, 0, 0.0))) return length;
+    if (fitsEnvelope(key, level, base, length, 0, 0.0)) return length;
     double lo = 0.0, hi = length;
     for (int i = 0; i < kPruneSteps; ++i) {
       const double mid = 0.5 * (lo + hi);
-      if (fitsEnvelope(growGeometry(key, level, base, mid, 0, 0.0))) lo = mid;
+      if (fitsEnvelope(key, level, base, mid, 0, 0.0)) lo = mid;
       else hi = mid;
     }
     return length * (1.0 - p_.pruneRatio) + lo * p_.pruneRatio;
@@ -187,7 +210,8 @@ class Grower {
 
   void growTrunks() {
     Rng treeRng(mix64(options_.seed), kStreamTree);
-    tree_.treeScale = p_.scale + p_.scaleV * treeRng.signedUnit();
+    // Arbaro files allow ScaleV == Scale; a tree of size ~0 helps nobody, so sizes stop at 5 % of Scale.
+    tree_.treeScale = std::max(0.05 * p_.scale, p_.scale + p_.scaleV * treeRng.signedUnit());
     tree_.baseLength = p_.baseSize * tree_.treeScale;
     const StemLevelParams& lp = p_.level(0);
     const int trunks = static_cast<int>(lp.branches);
@@ -196,7 +220,8 @@ class Grower {
       const std::uint64_t key = childKey(options_.seed, kKeyTrunk, static_cast<std::uint64_t>(t));
       Rng place(key, kStreamPlacement);
       const double length = std::max(1e-6, (lp.length + lp.lengthV * place.signedUnit()) * tree_.treeScale);
-      const double radius = length * p_.ratio * (p_.trunkScale + p_.trunkScaleV * place.signedUnit());
+      const double trunkScale = std::max(0.05 * p_.trunkScale, p_.trunkScale + p_.trunkScaleV * place.signedUnit());
+      const double radius = length * p_.ratio * trunkScale;
       Transform base;
       if (trunks > 1) {
         azimuth = nextAzimuth(lp.rotate, lp.rotateV, azimuth, side, treeRng);
@@ -358,10 +383,7 @@ class Grower {
     const Quat world = segment * local;
     const Vec3 blade = world * Vec3(0, 0, 1);
     Vec3 normal = world * Vec3(0, 1, 0);
-    if (normal.z < 0.0) {  // show the upper face to the sky
-      local = local * rotationZ(kPi);
-      normal = -normal;
-    }
+    if (normal.z < 0.0) normal = -normal;  // bend the face that will show to the sky
     Vec3 target = kUp - blade * glm::dot(kUp, blade);
     const double targetLength = glm::length(target);
     if (p_.leafBend <= 0.0 || targetLength < 1e-9) return local;

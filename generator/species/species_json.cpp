@@ -198,14 +198,6 @@ std::string writeSpeciesJson(const SpeciesParams& p) {
 }
 
 void validateSpecies(const SpeciesParams& p, const std::string& file) {
-  if (p.scaleV >= p.scale) {
-    throw SpeciesError(file, "ScaleV", formatNumber(p.scaleV) + " must be less than Scale (" + formatNumber(p.scale) +
-                                          ") so that every tree has a positive size");
-  }
-  if (p.trunkScaleV >= p.trunkScale) {
-    throw SpeciesError(file, "TrunkScaleV", formatNumber(p.trunkScaleV) + " must be less than TrunkScale (" +
-                                                formatNumber(p.trunkScale) + ")");
-  }
   if (static_cast<int>(p.stemLevels.size()) < p.levels) {
     throw SpeciesError(file, "StemLevels",
                        "has " + std::to_string(p.stemLevels.size()) + " entries but Levels is " +
@@ -217,20 +209,20 @@ void validateSpecies(const SpeciesParams& p, const std::string& file) {
                        formatNumber(trunks) + " trunks is not allowed; allowed integer in [1, 64]");
   }
   if (p.stemLevels[0].length <= 0) {
-    throw SpeciesError(file, "StemLevels[0].Length", "the trunk needs a length; allowed number in (0, 10]");
+    throw SpeciesError(file, "StemLevels[0].Length", "the trunk needs a length; allowed number in (0, 50]");
   }
 }
 
 SpeciesParams loadSpeciesFile(const std::string& path, ImportNotes* notes) {
+  const bool json = endsWith(path, ".json"), xml = endsWith(path, ".xml");
+  if (!json && !xml) throw SpeciesError(path, "(file)", "unknown species file type; use .json (Arbor) or .xml (Arbaro)");
   std::string text;
   try {
     text = readFile(path);
   } catch (const std::runtime_error&) {
     throw SpeciesError(path, "(file)", "cannot be opened for reading");
   }
-  if (endsWith(path, ".json")) return readSpeciesJson(text, path);
-  if (endsWith(path, ".xml")) return readSpeciesXml(text, path, notes);
-  throw SpeciesError(path, "(file)", "unknown species file type; use .json (Arbor) or .xml (Arbaro)");
+  return json ? readSpeciesJson(text, path) : readSpeciesXml(text, path, notes);
 }
 
 SpeciesError::SpeciesError(std::string file, std::string field, const std::string& message)

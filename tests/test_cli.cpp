@@ -1,0 +1,113 @@
+// The arbor program as a user runs it: exit codes, messages naming file and field, nothing half-written.
+#include <catch2/catch.hpp>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sys/wait.h>
+
+#include "common/atomic_file.hpp"
+#include "test_support.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Result {
+  int exitCode = -1;
+  std::string output;  // stdout and stderr together
+};
+
+Result run(const std::string& arguments) {
+  const std::string command = std::string(ARBOR_BINARY) + " " + arguments + " 2>&1";
+  Result r;
+  FILE* pipe = popen(command.c_str(), "r");
+  REQUIRE(pipe);
+  char buffer[4096];
+  std::size_t n = 0;
+  while ((n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) r.output.append(buffer, n);
+  const int status = pclose(pipe);
+  r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
+std::string writeTemp(const std::string& name, const std::string& content) {
+  const std::string path = arbor::test::tempPath(name);
+  std::ofstream(path) << content;
+  return path;
+}
+
+}  // namespace
+
+TEST_CASE("generate writes a skeleton and a summary", "[cli]") {
+  const std::string out = arbor::test::tempPath("aspen.json");
+  const Result r = run("generate quaking-aspen --seed 3 --out " + out);
+  INFO(r.output);
+  REQUIRE(r.exitCode == 0);
+  CHECK_THAT(r.output, Catch::Contains("Quaking Aspen") && Catch::Contains("nodes") && Catch::Contains("wrote"));
+  const auto doc = nlohmann::json::parse(arbor::readFile(out));
+  CHECK(doc["format"] == "arbor-skeleton/1");
+  CHECK(doc["seed"] == 3);
+  CHECK(doc["nodes"].size() > 100);
+  CHECK(doc["leaves"].size() > 100);
+  CHECK(doc["nodes"][0]["parent"] == -1);
+}
+
+TEST_CASE("the same command twice writes byte-identical files", "[cli]") {
+  const std::string a = arbor::test::tempPath("a.json"), b = arbor::test::tempPath("b.json");
+  REQUIRE(run("generate palm --seed 9 --quiet --out " + a).exitCode == 0);
+  REQUIRE(run("generate palm --seed 9 --quiet --out " + b).exitCode == 0);
+  CHECK(arbor::readFile(a) == arbor::readFile(b));
+}
+
+TEST_CASE("bad species files exit with 2, name file and field, and leave the output alone", "[cli]") {
+  const std::string bad = writeTemp("bad-species.json", "{\"Name\": \"x\", \"Shape\": 12}");
+  const std::string out = writeTemp("keep.json", "previous content");
+  const Result r = run("generate " + bad + " --out " + out);
+  CHECK(r.exitCode == 2);
+  CHECK_THAT(r.output, Catch::Contains("bad-species.json") && Catch::Contains("'Shape'") && Catch::Contains("[0, 8]"));
+  CHECK(arbor::readFile(out) == "previous content");
+
+  const std::string xml = writeTemp("bad.xml", "<arbaro><species name='x'><param name='Shape' value='1'/>");
+  const Result x = run("generate " + xml + " --out " + arbor::test::tempPath("x.json"));
+  CHECK(x.exitCode == 2);
+  CHECK_THAT(x.output, Catch::Contains("bad.xml") && Catch::Contains("XML error"));
+  CHECK_FALSE(fs::exists(arbor::test::tempPath("x.json")));
+}
+
+TEST_CASE("unknown presets list the presets on offer", "[cli]") {
+  const Result r = run("generate no-such-tree --out " + arbor::test::tempPath("n.json"));
+  CHECK(r.exitCode == 2);
+  CHECK_THAT(r.output, Catch::Contains("no-such-tree") && Catch::Contains("black-tupelo"));
+}
+
+TEST_CASE("usage errors exit with 2", "[cli]") {
+  CHECK(run("generate palm").exitCode == 2);                                   // --out missing
+  CHECK(run("generate palm --levels 0 --out x.json").exitCode == 2);           // out of range
+  CHECK(run("generate palm --out " + arbor::test::tempPath("p.txt")).exitCode == 2);  // unknown output type
+  CHECK(run("frobnicate").exitCode == 2);
+}
+
+TEST_CASE("an unwritable output fails cleanly with 1", "[cli]") {
+  const Result r = run("generate palm --out /nonexistent-dir/palm.json");
+  CHECK(r.exitCode == 1);
+  CHECK_THAT(r.output, Catch::Contains("/nonexistent-dir/palm.json"));
+}
+
+TEST_CASE("every subcommand has --help", "[cli]") {
+  for (const char* command : {"", "generate", "species", "bench", "bench generate"}) {
+    const Result r = run(std::string(command) + " --help");
+    INFO(command);
+    CHECK(r.exitCode == 0);
+    CHECK_THAT(r.output, Catch::Contains("Usage") || Catch::Contains("usage") || Catch::Contains("OPTIONS"));
+  }
+}
+
+TEST_CASE("species converts an Arbaro file to Arbor JSON that reads back", "[cli]") {
+  const std::string out = arbor::test::tempPath("shrub.json");
+  const Result r = run(std::string("species ") + TEST_DATA_DIR + "/small-arbaro.xml --out " + out);
+  INFO(r.output);
+  REQUIRE(r.exitCode == 0);
+  const Result g = run("generate " + out + " --quiet --out " + arbor::test::tempPath("shrub-skeleton.json"));
+  CHECK(g.exitCode == 0);
+}

@@ -1,0 +1,257 @@
+// Skeleton invariants: r^E conservation at every branch point, Murray's angles at every attachment,
+// breadth-first level invariance, determinism, exact child and leaf counts, pruning, flare.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <map>
+
+#include "growth/natural_rules.hpp"
+#include "growth/skeleton_checks.hpp"
+#include "growth/skeleton_json.hpp"
+#include "growth/weber_penn.hpp"
+#include "growth/weber_penn_rules.hpp"
+#include "test_support.hpp"
+
+using namespace arbor;
+using Catch::Matchers::WithinAbs;
+
+namespace {
+
+Skeleton grow(const SpeciesParams& p, std::uint64_t seed, int levels = 0) {
+  GrowthOptions o;
+  o.seed = seed;
+  o.levels = levels;
+  return generateSkeleton(p, o);
+}
+
+const SkeletonNode& node(const Skeleton& s, int i) { return s.nodes[static_cast<std::size_t>(i)]; }
+
+// The node that continues the parent stem after attachment node a.
+int continuationOf(const Skeleton& s, int a) {
+  for (std::size_t i = static_cast<std::size_t>(a) + 1; i < s.nodes.size(); ++i) {
+    if (s.nodes[i].parent == a && s.nodes[i].stem == node(s, a).stem) return static_cast<int>(i);
+  }
+  return -1;
+}
+
+}  // namespace
+
+TEST_CASE("r^E is conserved at every branch point of every preset", "[skeleton]") {
+  for (const std::string& name : test::presetNames()) {
+    const SpeciesParams p = test::loadPreset(name);
+    for (std::uint64_t seed : {1u, 7u}) {
+      INFO(name << " seed " << seed);
+      const Skeleton s = grow(p, seed);
+      CHECK(structuralProblems(s).empty());
+      CHECK(worstConservationError(s) < 1e-12);
+      CHECK(skeletonStats(s).branchPoints > 0);
+    }
+  }
+}
+
+TEST_CASE("the skeleton is one connected tree", "[skeleton]") {
+  SpeciesParams p = test::steadySpecies();
+  p.stemLevels[0].branches = 3;  // several trunks meet in a root node
+  p.stemLevels[0].downAngle = 20;
+  p.stemLevels[0].rotate = 120;
+  for (const SpeciesParams& q : {test::steadySpecies(), p}) {
+    const Skeleton s = grow(q, 3);
+    int roots = 0;
+    for (const SkeletonNode& n : s.nodes) roots += n.parent < 0 ? 1 : 0;
+    CHECK(roots == 1);
+    CHECK(worstConservationError(s) < 1e-12);
+  }
+}
+
+TEST_CASE("children leave at Murray's angle and deflect their parent by Murray's x", "[skeleton]") {
+  for (const std::string& name : test::presetNames()) {
+    const SpeciesParams p = test::loadPreset(name);
+    const Skeleton s = grow(p, 2);
+    const bool natural = p.angleRule == AngleRule::Natural;
+    int checked = 0;
+    for (const SkeletonStem& st : s.stems) {
+      if (st.parentStem < 0 || st.cloneOf >= 0) continue;
+      INFO(name << " stem level " << st.level);
+      const int a = st.attachNode;
+      const int c = continuationOf(s, a);
+      REQUIRE(c >= 0);
+      const Vec3 at = node(s, a).world.position;
+      const Vec3 incoming = node(s, a).world.direction();
+      const Vec3 child = node(s, st.firstNode).world.position - at;
+      const Vec3 primary = node(s, c).world.position - at;
+      CHECK_THAT(test::angleBetween(incoming, child), WithinAbs(st.secondaryAngle, 1e-9));
+      CHECK_THAT(test::angleBetween(incoming, primary), WithinAbs(st.primaryDeflection, 1e-9));
+      if (natural) {
+        // Child and primary on opposite sides of the incoming direction: x + y apart.
+        CHECK_THAT(test::angleBetween(child, primary), WithinAbs(st.secondaryAngle + st.primaryDeflection, 1e-9));
+        const double Cp = natural::primaryRadiusFactor(st.branchRatio, s.exponent);
+        const double Cs = natural::secondaryRadiusFactor(st.branchRatio, s.exponent);
+        CHECK_THAT(st.secondaryAngle, WithinAbs(natural::secondaryAngle(1.0, Cp, Cs), 1e-12));
+        CHECK_THAT(st.primaryDeflection, WithinAbs(natural::primaryAngle(1.0, Cp, Cs), 1e-12));
+      } else {
+        CHECK(st.primaryDeflection == 0.0);
+      }
+      ++checked;
+    }
+    CHECK(checked > 0);
+  }
+}
+
+TEST_CASE("one more level keeps the lower levels of the same seed (breadth-first)", "[skeleton]") {
+  for (const std::string& name : test::presetNames()) {
+    const SpeciesParams p = test::loadPreset(name);
+    for (int k = 1; k < p.levels; ++k) {
+      INFO(name << ": levels " << k << " -> " << k + 1);
+      const Skeleton a = grow(p, 5, k), b = grow(p, 5, k + 1);
+      std::map<std::uint64_t, const SkeletonStem*> byKey;
+      for (const SkeletonStem& st : b.stems) byKey[st.key] = &st;
+      std::size_t rawMismatches = 0, finalMismatches = 0, skeletonMismatches = 0;
+      for (const SkeletonStem& st : a.stems) {
+        auto it = byKey.find(st.key);
+        REQUIRE(it != byKey.end());
+        const SkeletonStem& other = *it->second;
+        // Raw tree data of every level of the smaller tree: identical bit for bit.
+        // (Radii are not raw data: the natural rules apply them, and new children change the deepest level's.)
+        const bool rawSame = other.level == st.level && other.length == st.length &&
+                             other.rawJoints.size() == st.rawJoints.size() &&
+                             std::equal(st.rawJoints.begin(), st.rawJoints.end(), other.rawJoints.begin(),
+                                        [](const Transform& x, const Transform& y) {
+                                          return x.position == y.position && x.rotation == y.rotation;
+                                        });
+        rawMismatches += rawSame ? 0 : 1;
+        if (st.level < k - 1) {
+          // Final skeleton below the deepest level of the smaller tree: identical.
+          bool same = st.nodeCount == other.nodeCount;
+          for (int i = 0; same && i < st.nodeCount; ++i) {
+            const SkeletonNode& x = node(a, st.firstNode + i);
+            const SkeletonNode& y = node(b, other.firstNode + i);
+            same = x.kind == y.kind && x.offset == y.offset && x.world.position == y.world.position &&
+                   x.radius == y.radius && x.startRadius == y.startRadius;
+          }
+          finalMismatches += same ? 0 : 1;
+        } else {
+          // The deepest level differs only by the intermediate nodes (and deflections) of its new children.
+          std::vector<std::pair<NodeKind, double>> x, y;
+          auto structural = [](NodeKind kind) {
+            return kind == NodeKind::Joint || kind == NodeKind::Tip || kind == NodeKind::Split || kind == NodeKind::Base;
+          };
+          for (int i = 0; i < st.nodeCount; ++i) {
+            const SkeletonNode& n = node(a, st.firstNode + i);
+            if (structural(n.kind)) x.emplace_back(n.kind, n.offset);
+          }
+          for (int i = 0; i < other.nodeCount; ++i) {
+            const SkeletonNode& n = node(b, other.firstNode + i);
+            if (structural(n.kind)) y.emplace_back(n.kind, n.offset);
+          }
+          skeletonMismatches += x == y ? 0 : 1;
+        }
+      }
+      CHECK(rawMismatches == 0);
+      CHECK(finalMismatches == 0);
+      CHECK(skeletonMismatches == 0);
+    }
+  }
+}
+
+TEST_CASE("the same seed gives byte-identical output; another seed another tree", "[skeleton]") {
+  const SpeciesParams p = test::loadPreset("black-tupelo");
+  const std::string a = writeSkeletonJson(grow(p, 11)), b = writeSkeletonJson(grow(p, 11));
+  CHECK(a == b);
+  CHECK(a != writeSkeletonJson(grow(p, 12)));
+}
+
+TEST_CASE("child counts follow the formulas exactly when variations are zero", "[skeleton]") {
+  const SpeciesParams p = test::steadySpecies();
+  const Skeleton s = grow(p, 1);
+  std::vector<int> children(s.stems.size(), 0);
+  for (const SkeletonStem& st : s.stems) {
+    if (st.parentStem >= 0 && st.cloneOf < 0) ++children[static_cast<std::size_t>(st.parentStem)];
+  }
+  const SkeletonStem& trunk = s.stems[0];
+  CHECK(children[0] == 12);
+  int levelOne = 0;
+  for (std::size_t i = 0; i < s.stems.size(); ++i) {
+    const SkeletonStem& st = s.stems[i];
+    if (st.level != 1) continue;
+    const double expected = wp::childCountOfLevel1(8, st.length, trunk.length, 0.4);
+    CHECK(children[i] == static_cast<int>(std::floor(expected + 0.5)));
+    ++levelOne;
+  }
+  CHECK(levelOne == 12);
+}
+
+TEST_CASE("leaf counts follow the formula exactly when variations are zero", "[skeleton]") {
+  const SpeciesParams p = test::steadySpecies();
+  const Skeleton s = grow(p, 1);
+  std::vector<int> leaves(s.stems.size(), 0);
+  for (const Leaf& l : s.leaves) ++leaves[static_cast<std::size_t>(l.stem)];
+  int deepest = 0;
+  for (std::size_t i = 0; i < s.stems.size(); ++i) {
+    const SkeletonStem& st = s.stems[i];
+    if (st.level != 2) {
+      CHECK(leaves[i] == 0);
+      continue;
+    }
+    const double parentLength = s.stems[static_cast<std::size_t>(st.parentStem)].length;
+    const double expected = 6.0 * wp::shapeRatio(4, st.offsetOnParent / parentLength);
+    CHECK(leaves[i] == static_cast<int>(std::floor(expected + 0.5)));
+    ++deepest;
+  }
+  CHECK(deepest > 50);
+  for (const Leaf& l : s.leaves) {
+    CHECK_THAT(glm::length(l.direction), WithinAbs(1.0, 1e-12));
+    CHECK_THAT(glm::dot(l.direction, l.normal), WithinAbs(0.0, 1e-12));
+    CHECK(l.normal.z >= -1e-12);  // faces the sky
+  }
+}
+
+TEST_CASE("trunk radius and flare follow Ratio and Flare", "[skeleton]") {
+  SpeciesParams p = test::steadySpecies();
+  p.flare = 0.8;
+  const Skeleton s = grow(p, 1);
+  const double trunkRadius = 10.0 * p.ratio;  // length 1 * Scale 10, TrunkScale 1
+  CHECK_THAT(s.nodes[0].radius, WithinAbs(trunkRadius * (1.0 + 0.8 * 0.99), 1e-12));
+  // Along an unbranched twig of taper 1 the radius falls to zero at the tip.
+  for (const SkeletonStem& st : s.stems) {
+    if (st.level != 2) continue;
+    double previous = st.startRadius;
+    for (int i = 0; i < st.nodeCount; ++i) {
+      const SkeletonNode& n = node(s, st.firstNode + i);
+      CHECK(n.radius <= previous + 1e-15);
+      previous = n.radius;
+    }
+    CHECK_THAT(previous, WithinAbs(0.0, 1e-12));
+  }
+}
+
+TEST_CASE("pruned stems lie inside the envelope", "[skeleton]") {
+  const SpeciesParams p = test::loadPreset("weeping-willow");
+  REQUIRE(p.pruneRatio == 1.0);
+  const Skeleton s = grow(p, 4);
+  std::size_t outside = 0, tested = 0;
+  for (const SkeletonStem& st : s.stems) {
+    if (st.level == 0) continue;
+    for (std::size_t j = 1; j < st.rawJoints.size(); ++j) {
+      const Vec3& q = st.rawJoints[j].position;
+      outside += wp::insideEnvelope(p, s.treeScale, q.x, q.y, q.z) ? 0 : 1;
+      ++tested;
+    }
+  }
+  CHECK(tested > 1000);
+  CHECK(outside == 0);
+}
+
+TEST_CASE("extra levels beyond the species' reuse its deepest level parameters", "[skeleton]") {
+  const SpeciesParams p = test::loadPreset("quaking-aspen");
+  const Skeleton s = grow(p, 1, p.levels + 1);
+  const SkeletonStats stats = skeletonStats(s);
+  REQUIRE(stats.stemsPerLevel.size() == static_cast<std::size_t>(p.levels + 1));
+  CHECK(stats.stemsPerLevel.back() > stats.stemsPerLevel[static_cast<std::size_t>(p.levels - 1)]);
+  CHECK(worstConservationError(s) < 1e-12);
+}
+
+TEST_CASE("too large a tree is refused, not grown until memory runs out", "[skeleton]") {
+  SpeciesParams p = test::steadySpecies();
+  GrowthOptions o;
+  o.maxNodes = 100;
+  CHECK_THROWS_AS(generateSkeleton(p, o), GenerationError);
+}

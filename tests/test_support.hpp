@@ -1,0 +1,21 @@
+#pragma once
+// Shared helpers for the tests: presets, a variation-free species, angles between directions.
+#include <string>
+#include <vector>
+
+#include "growth/math.hpp"
+#include "species/species.hpp"
+
+namespace arbor::test {
+
+std::vector<std::string> presetNames();
+SpeciesParams loadPreset(const std::string& name);
+
+// A small three-level species with every random variation zero, for exact-count tests.
+SpeciesParams steadySpecies();
+
+double angleBetween(const Vec3& a, const Vec3& b);  // radians
+
+std::string tempPath(const std::string& name);  // in a per-run scratch directory
+
+}  // namespace arbor::test
