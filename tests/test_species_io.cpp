@@ -195,3 +195,7 @@ TEST_CASE("all of Arbaro's species files import", "[species][xml][real-data]") {
   }
   CHECK(count == 16);
 }
+
+TEST_CASE("docs/species-format.md is the documentation the parser generates", "[species][docs]") {
+  CHECK(readFile(std::string(ARBOR_SOURCE_DIR) + "/docs/species-format.md") == speciesFormatMarkdown());
+}

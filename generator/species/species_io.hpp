@@ -34,6 +34,9 @@ SpeciesParams loadSpeciesFile(const std::string& path, ImportNotes* notes = null
 // Canonical Arbor JSON: every field written, in table order.
 std::string writeSpeciesJson(const SpeciesParams& params);
 
+// The field-by-field documentation of the format (docs/species-format.md).
+std::string speciesFormatMarkdown();
+
 // Range and cross-field checks shared by both readers.
 void validateSpecies(const SpeciesParams& params, const std::string& file);
 

@@ -15,9 +15,14 @@ struct SpeciesOptions {
   std::string species;
   std::string out;
   bool list = false;
+  bool formatDoc = false;
 };
 
 int runSpecies(const SpeciesOptions& o) {
+  if (o.formatDoc) {
+    std::fputs(speciesFormatMarkdown().c_str(), stdout);
+    return 0;
+  }
   if (o.list || o.species.empty()) {
     std::printf("presets in %s/presets:\n", assetDirectory().c_str());
     for (const std::string& name : presetNames()) std::printf("  %s\n", name.c_str());
@@ -44,6 +49,7 @@ void addSpeciesCommand(CLI::App& app, Action& action) {
   cmd->add_option("species", o->species, "Preset name or .json/.xml species file (omit to list presets)");
   cmd->add_option("--out", o->out, "Write the species as Arbor JSON to this file instead of printing it");
   cmd->add_flag("--list", o->list, "List the presets");
+  cmd->add_flag("--format-doc", o->formatDoc, "Print the species format documentation (Markdown)");
   cmd->callback([o, &action] { action = [o] { return runSpecies(*o); }; });
 }
 
