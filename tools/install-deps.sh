@@ -29,3 +29,15 @@ if ((${#missing[@]})); then
 else
   echo "arbor: all system packages present"
 fi
+
+# The Khronos glTF validator the export tests run; pinned by tools/node/package-lock.json.
+node_dir="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)/node"
+if [[ -d "$node_dir/node_modules/gltf-validator" ]]; then
+  echo "arbor: glTF validator present"
+elif [[ -f "$node_dir/package-lock.json" ]]; then
+  echo "arbor: installing the glTF validator: npm ci in $node_dir"
+  (cd "$node_dir" && npm ci --no-audit --no-fund)
+else
+  echo "arbor: installing the glTF validator: npm install in $node_dir (no lock file yet)"
+  (cd "$node_dir" && npm install --no-audit --no-fund)
+fi

@@ -1,0 +1,225 @@
+#include "obj_export.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <cstdint>
+#include <initializer_list>
+#include <limits>
+#include <optional>
+#include <stdexcept>
+#include <string_view>
+#include <vector>
+
+#include "export_checks.hpp"
+
+namespace arbor {
+
+namespace {
+
+// Shortest text that reads back as the same float, so a write/read round trip is exact.
+void appendFloat(std::string& out, float x) {
+  char buffer[32];
+  const auto result = std::to_chars(buffer, buffer + sizeof buffer, x);
+  out.append(buffer, result.ptr);
+}
+
+void appendLine(std::string& out, const char* keyword, std::initializer_list<float> values) {
+  out += keyword;
+  for (const float x : values) {
+    out += ' ';
+    appendFloat(out, x);
+  }
+  out += '\n';
+}
+
+template <std::size_t N>
+void appendFace(std::string& out, const std::array<std::uint32_t, N>& corners) {
+  out += 'f';
+  for (const std::uint32_t v : corners) {
+    const std::string index = std::to_string(std::uint64_t{v} + 1);  // OBJ counts from 1
+    out += ' ';
+    out += index;
+    out += '/';
+    out += index;
+    out += '/';
+    out += index;
+  }
+  out += '\n';
+}
+
+// ---- reading ----
+
+struct Reader {
+  const std::string& file;
+  std::size_t line = 0;
+
+  [[noreturn]] void fail(const std::string& message) const {
+    throw std::runtime_error(file + ":" + std::to_string(line) + ": " + message);
+  }
+
+  float number(std::string_view word) const {
+    float x = 0;
+    const auto result = std::from_chars(word.data(), word.data() + word.size(), x);
+    if (result.ec != std::errc() || result.ptr != word.data() + word.size()) {
+      fail("'" + std::string(word) + "' is not a number");
+    }
+    return x;
+  }
+
+  // One face corner "a/a/a" as a 0-based vertex index.
+  std::uint32_t corner(std::string_view word) const {
+    std::uint64_t parts[3] = {0, 0, 0};
+    const char* p = word.data();
+    const char* end = word.data() + word.size();
+    for (int i = 0; i < 3; ++i) {
+      const auto result = std::from_chars(p, end, parts[i]);
+      const bool separatorOk = i < 2 ? (result.ptr != end && *result.ptr == '/') : result.ptr == end;
+      if (result.ec != std::errc() || !separatorOk || parts[i] == 0) {
+        fail("face corner '" + std::string(word) + "' is not v/vt/vn with 1-based indices");
+      }
+      p = result.ptr + 1;
+    }
+    if (parts[0] != parts[1] || parts[0] != parts[2]) {
+      fail("face corner '" + std::string(word) + "' uses different v, vt and vn indices; Arbor writes one per vertex");
+    }
+    if (parts[0] > std::numeric_limits<std::uint32_t>::max()) fail("face corner '" + std::string(word) + "' is too large");
+    return static_cast<std::uint32_t>(parts[0] - 1);
+  }
+};
+
+std::vector<std::string_view> words(std::string_view line) {
+  std::vector<std::string_view> result;
+  std::size_t i = 0;
+  while (i < line.size()) {
+    while (i < line.size() && (line[i] == ' ' || line[i] == '\t' || line[i] == '\r')) ++i;
+    const std::size_t start = i;
+    while (i < line.size() && line[i] != ' ' && line[i] != '\t' && line[i] != '\r') ++i;
+    if (i > start) result.push_back(line.substr(start, i - start));
+  }
+  return result;
+}
+
+using Triangle = std::array<std::uint32_t, 3>;
+using Quad = std::array<std::uint32_t, 4>;
+
+// Undoes arbor::triangulate: the partner runs the shared diagonal backwards, and its third corner goes
+// between the diagonal's ends, which gives back the quad starting where the first triangle starts.
+std::optional<Quad> joinTriangles(const Triangle& first, const Triangle& second) {
+  for (int i = 0; i < 3; ++i) {
+    const std::uint32_t a = first[i], b = first[(i + 1) % 3];
+    for (int j = 0; j < 3; ++j) {
+      if (second[j] != b || second[(j + 1) % 3] != a) continue;
+      const std::uint32_t apex = second[(j + 2) % 3];
+      if (apex == first[0] || apex == first[1] || apex == first[2]) return std::nullopt;
+      Quad quad{};
+      int k = 0;
+      for (int c = 0; c < 3; ++c) {
+        quad[k++] = first[c];
+        if (c == i) quad[k++] = apex;
+      }
+      return quad;
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::string writeObj(const QuadMesh& mesh, bool triangles) {
+  exporting::requirePerVertex(mesh, mesh.normals.size(), "normals", "writeObj");
+  exporting::requirePerVertex(mesh, mesh.uvw.size(), "uvw", "writeObj");
+  exporting::requireQuadIndicesInRange(mesh, "writeObj");
+
+  const auto triangleList = triangles ? triangulate(mesh) : std::vector<Triangle>{};
+  const std::size_t faceCount = triangles ? triangleList.size() : mesh.quads.size();
+
+  std::string out;
+  out.reserve(mesh.vertexCount() * 100 + faceCount * 40);
+  out += "# Arbor tree mesh: object space in metres, z up\n";
+  out += "# " + std::to_string(mesh.vertexCount()) + " vertices, " + std::to_string(faceCount) +
+         (triangles ? " triangles" : " quads") + "; vt is (u, v), the flip coordinate is not stored\n";
+  for (const auto& p : mesh.positions) appendLine(out, "v", {p.x, p.y, p.z});
+  for (const auto& t : mesh.uvw) appendLine(out, "vt", {t.x, t.y});
+  for (const auto& n : mesh.normals) appendLine(out, "vn", {n.x, n.y, n.z});
+  if (triangles) {
+    for (const auto& t : triangleList) appendFace(out, t);
+  } else {
+    for (const auto& q : mesh.quads) appendFace(out, q);
+  }
+  return out;
+}
+
+QuadMesh readObj(const std::string& text, const std::string& file) {
+  QuadMesh mesh;
+  Reader reader{file};
+  std::vector<std::size_t> faceLines;  // for naming a face whose index turns out too large
+  std::optional<Triangle> pending;     // first triangle of a pair, waiting for its partner
+  std::size_t pendingLine = 0;
+
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    const std::size_t stop = std::min(text.find('\n', start), text.size());
+    ++reader.line;
+    const auto w = words(std::string_view(text).substr(start, stop - start));
+    start = stop + 1;
+    if (w.empty() || w[0].front() == '#') continue;
+
+    const std::string_view keyword = w[0];
+    const std::size_t arguments = w.size() - 1;
+    if (keyword == "v" || keyword == "vn") {
+      if (arguments != 3) reader.fail(std::string(keyword) + " needs 3 numbers, found " + std::to_string(arguments));
+      const glm::vec3 value(reader.number(w[1]), reader.number(w[2]), reader.number(w[3]));
+      (keyword == "v" ? mesh.positions : mesh.normals).push_back(value);
+    } else if (keyword == "vt") {
+      if (arguments != 2 && arguments != 3) reader.fail("vt needs 2 numbers, found " + std::to_string(arguments));
+      mesh.uvw.emplace_back(reader.number(w[1]), reader.number(w[2]), 0.0f);
+    } else if (keyword == "f") {
+      if (arguments == 4) {
+        if (pending) {
+          reader.line = pendingLine;
+          reader.fail("triangle has no partner to form a quad with");
+        }
+        mesh.quads.push_back({reader.corner(w[1]), reader.corner(w[2]), reader.corner(w[3]), reader.corner(w[4])});
+        faceLines.push_back(reader.line);
+      } else if (arguments == 3) {
+        const Triangle t{reader.corner(w[1]), reader.corner(w[2]), reader.corner(w[3])};
+        if (!pending) {
+          pending = t;
+          pendingLine = reader.line;
+          continue;
+        }
+        const auto quad = joinTriangles(*pending, t);
+        if (!quad) reader.fail("triangle does not share an edge with the triangle on line " + std::to_string(pendingLine));
+        mesh.quads.push_back(*quad);
+        faceLines.push_back(reader.line);
+        pending.reset();
+      } else {
+        reader.fail("faces must have 3 or 4 corners, found " + std::to_string(arguments));
+      }
+    } else if (keyword != "o" && keyword != "g" && keyword != "s" && keyword != "mtllib" && keyword != "usemtl") {
+      reader.fail("unsupported statement '" + std::string(keyword) + "'");
+    }
+  }
+  if (pending) {
+    reader.line = pendingLine;
+    reader.fail("triangle has no partner to form a quad with");
+  }
+
+  const std::size_t count = mesh.positions.size();
+  if (mesh.uvw.size() != count || mesh.normals.size() != count) {
+    throw std::runtime_error(file + ": " + std::to_string(count) + " v, " + std::to_string(mesh.uvw.size()) + " vt and " +
+                             std::to_string(mesh.normals.size()) + " vn lines; Arbor's OBJ has one of each per vertex");
+  }
+  for (std::size_t f = 0; f < mesh.quads.size(); ++f) {
+    for (const std::uint32_t v : mesh.quads[f]) {
+      if (v >= count) {
+        reader.line = faceLines[f];
+        reader.fail("face refers to vertex " + std::to_string(std::uint64_t{v} + 1) + " but there are only " +
+                    std::to_string(count));
+      }
+    }
+  }
+  return mesh;
+}
+
+}  // namespace arbor

@@ -1,0 +1,23 @@
+#pragma once
+// Wavefront OBJ for artists' tools: the quad mesh as it is, object space in metres, z up.
+// One vertex carries one position, one texture coordinate and one normal, so every face corner is "i/i/i".
+#include <string>
+
+#include "mesh/quad_mesh.hpp"
+
+namespace arbor {
+
+// `v x y z`, `vt u v` (the flip coordinate w has no place in OBJ), `vn x y z`, then one `f` per quad,
+// or two per quad split by arbor::triangulate when `triangles` is set. Numbers are written in the
+// shortest form that reads back as the same float. Needs positions, uvw and normals for every vertex;
+// throws std::invalid_argument otherwise.
+std::string writeObj(const QuadMesh& mesh, bool triangles);
+
+// Reads what writeObj writes: v, vt, vn and f lines with 1-based "a/a/a" corners; comments, o, g, s,
+// mtllib and usemtl are skipped. Triangles must come in the consecutive pairs writeObj emits, and each
+// pair is joined back into its quad (QuadMesh holds quads only). The result has positions, normals,
+// uvw (w = 0) and quads; tangents, radius, level and openBoundary are not in OBJ and stay empty.
+// Throws std::runtime_error naming `file` and the line on anything else.
+QuadMesh readObj(const std::string& text, const std::string& file);
+
+}  // namespace arbor

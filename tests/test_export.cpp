@@ -1,0 +1,503 @@
+// Exports: OBJ round trips bit for bit, glTF/GLB pass the Khronos validator and are y up, and OpenSubdiv
+// subdivision keeps the mesh closed, oriented and on the limit surface it should be on.
+// The meshes are built here (a cube and a capped tube) so these tests do not depend on the mesh builder.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <map>
+#include <numbers>
+#include <nlohmann/json.hpp>
+#include <sys/wait.h>
+
+#include <glm/geometric.hpp>
+
+#include "common/atomic_file.hpp"
+#include "export/gltf_export.hpp"
+#include "export/obj_export.hpp"
+#include "export/subdivide.hpp"
+#include "test_support.hpp"
+
+using namespace arbor;
+using Catch::Matchers::Contains;
+
+namespace {
+
+void addVertex(QuadMesh& m, glm::vec3 p, glm::vec3 normal, glm::vec3 tangent, glm::vec3 uvw, float radius, std::uint8_t level) {
+  m.positions.push_back(p);
+  m.normals.push_back(glm::normalize(normal));
+  m.tangents.push_back(glm::normalize(tangent));
+  m.uvw.push_back(uvw);
+  m.radius.push_back(radius);
+  m.level.push_back(level);
+}
+
+// The cube [-1, 1] x [-1, 1] x [0, 2]: vertex i has x from bit 0, y from bit 1, z from bit 2.
+QuadMesh cube() {
+  QuadMesh m;
+  for (int i = 0; i < 8; ++i) {
+    const glm::vec3 p((i & 1) ? 1.0f : -1.0f, (i & 2) ? 1.0f : -1.0f, (i & 4) ? 2.0f : 0.0f);
+    const glm::vec3 uvw((p.x + 1) / 2, p.z / 2, p.y > 0 ? 1.0f : 0.0f);
+    addVertex(m, p, p - glm::vec3(0, 0, 1), glm::vec3(0, 0, 1), uvw, 1.0f, 0);
+  }
+  m.quads = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+  return m;
+}
+
+constexpr float kTubeRadius = 0.5f;
+constexpr float kRingSpacing = 1.0f;
+
+std::uint32_t tubeVertex(int ring, int j) { return static_cast<std::uint32_t>(ring * 4 + (j % 4)); }
+
+// `rings` square rings of 4 vertices along z (vertices on the x and y axes), side quads between them, and
+// a cap quad at each end unless `openBase`, in which case ring 0 is the open boundary.
+QuadMesh tube(int rings, bool openBase = false) {
+  QuadMesh m;
+  for (int k = 0; k < rings; ++k) {
+    const float z = static_cast<float>(k) * kRingSpacing;
+    for (int j = 0; j < 4; ++j) {
+      const double angle = j * std::numbers::pi / 2;
+      const glm::vec3 outward(static_cast<float>(std::cos(angle)), static_cast<float>(std::sin(angle)), 0.0f);
+      const float u = j == 0 ? 0.0f : j == 2 ? 1.0f : 0.5f;  // mirrored around the ring
+      const glm::vec3 uvw(u, z, j == 3 ? 1.0f : 0.0f);
+      addVertex(m, kTubeRadius * outward + glm::vec3(0, 0, z), outward, glm::vec3(0, 0, 1), uvw, kTubeRadius,
+                static_cast<std::uint8_t>(2 * k < rings ? 0 : 1));
+    }
+  }
+  for (int k = 0; k + 1 < rings; ++k) {
+    for (int j = 0; j < 4; ++j) {
+      m.quads.push_back({tubeVertex(k, j), tubeVertex(k, j + 1), tubeVertex(k + 1, j + 1), tubeVertex(k + 1, j)});
+    }
+  }
+  if (openBase) {
+    m.openBoundary = {tubeVertex(0, 0), tubeVertex(0, 1), tubeVertex(0, 2), tubeVertex(0, 3)};
+  } else {
+    m.quads.push_back({tubeVertex(0, 0), tubeVertex(0, 3), tubeVertex(0, 2), tubeVertex(0, 1)});
+  }
+  const int top = rings - 1;
+  m.quads.push_back({tubeVertex(top, 0), tubeVertex(top, 1), tubeVertex(top, 2), tubeVertex(top, 3)});
+  return m;
+}
+
+using DirectedEdges = std::map<std::pair<std::uint32_t, std::uint32_t>, int>;
+
+DirectedEdges directedEdges(const QuadMesh& m) {
+  DirectedEdges edges;
+  for (const auto& q : m.quads) {
+    for (int i = 0; i < 4; ++i) ++edges[{q[i], q[(i + 1) % 4]}];
+  }
+  return edges;
+}
+
+// Closed and consistently oriented: each directed edge once, and its reverse once (from the neighbour).
+void requireClosedAndOriented(const QuadMesh& m) {
+  const DirectedEdges edges = directedEdges(m);
+  int problems = 0;
+  for (const auto& [edge, count] : edges) {
+    const auto reverse = edges.find({edge.second, edge.first});
+    if (count != 1 || reverse == edges.end() || reverse->second != 1) ++problems;
+  }
+  CHECK(problems == 0);
+  CHECK(edges.size() == 4 * m.quads.size());
+}
+
+// The stored normal at every corner of every quad agrees with the quad's own outward normal.
+int normalsAgainstFaces(const QuadMesh& m) {
+  int wrong = 0;
+  for (const auto& q : m.quads) {
+    const auto& p = m.positions;
+    const glm::vec3 face = glm::cross(p[q[2]] - p[q[0]], p[q[3]] - p[q[1]]);
+    for (const std::uint32_t v : q) wrong += glm::dot(face, m.normals[v]) <= 0 ? 1 : 0;
+  }
+  return wrong;
+}
+
+struct Run {
+  int exitCode = -1;
+  std::string output;
+};
+
+Run validate(const std::string& file) {
+  const std::string command = "node '" + std::string(ARBOR_SOURCE_DIR) + "/tools/validate-gltf.mjs' '" + file + "' 2>&1";
+  Run r;
+  FILE* pipe = popen(command.c_str(), "r");
+  REQUIRE(pipe);
+  char buffer[4096];
+  std::size_t n = 0;
+  while ((n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) r.output.append(buffer, n);
+  const int status = pclose(pipe);
+  r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
+std::uint32_t word(const std::string& bytes, std::size_t at) {
+  std::uint32_t w = 0;
+  REQUIRE(at + 4 <= bytes.size());
+  std::memcpy(&w, bytes.data() + at, 4);
+  return w;
+}
+
+struct Glb {
+  nlohmann::json json;
+  std::string binary;  // the BIN chunk, padding included
+};
+
+// Splits a GLB after checking every length in it against the others.
+Glb splitGlb(const std::string& glb) {
+  REQUIRE(glb.size() >= 28);
+  CHECK(word(glb, 0) == 0x46546C67);
+  CHECK(word(glb, 4) == 2);
+  CHECK(word(glb, 8) == glb.size());
+  const std::uint32_t jsonLength = word(glb, 12);
+  CHECK(word(glb, 16) == 0x4E4F534A);
+  CHECK(jsonLength % 4 == 0);
+  const std::size_t binAt = 20 + std::size_t{jsonLength};
+  const std::uint32_t binLength = word(glb, binAt);
+  CHECK(word(glb, binAt + 4) == 0x004E4942);
+  CHECK(binLength % 4 == 0);
+  REQUIRE(binAt + 8 + binLength == glb.size());
+  Glb out{nlohmann::json::parse(glb.substr(20, jsonLength)), glb.substr(binAt + 8, binLength)};
+  const std::size_t declared = out.json["buffers"][0]["byteLength"];
+  CHECK(declared <= binLength);
+  CHECK(binLength - declared < 4);
+  return out;
+}
+
+std::vector<float> accessorFloats(const nlohmann::json& doc, const std::string& binary, int accessor, int components) {
+  const auto& a = doc["accessors"][accessor];
+  const auto& view = doc["bufferViews"][a["bufferView"].get<int>()];
+  const std::size_t offset = view.value("byteOffset", std::size_t{0}) + a.value("byteOffset", std::size_t{0});
+  const std::size_t count = a["count"].get<std::size_t>() * static_cast<std::size_t>(components);
+  REQUIRE(a["componentType"] == 5126);
+  REQUIRE(offset + count * 4 <= binary.size());
+  std::vector<float> values(count);
+  std::memcpy(values.data(), binary.data() + offset, count * 4);
+  return values;
+}
+
+std::string decodeBase64(const std::string& text) {
+  std::string out;
+  std::uint32_t group = 0;
+  int bits = 0;
+  for (const char c : text) {
+    if (c == '=') break;
+    const char* alphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    const char* at = std::strchr(alphabet, c);
+    REQUIRE((at && c != '\0'));
+    group = (group << 6) | static_cast<std::uint32_t>(at - alphabet);
+    bits += 6;
+    if (bits >= 8) {
+      bits -= 8;
+      out += static_cast<char>((group >> bits) & 0xFF);
+    }
+  }
+  return out;
+}
+
+std::string writeTemp(const std::string& name, const std::string& content) {
+  const std::string path = test::tempPath(name);
+  writeFileAtomically(path, content);
+  return path;
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------- OBJ
+
+TEST_CASE("OBJ quads read back bit for bit", "[export][obj]") {
+  for (const QuadMesh& m : {cube(), tube(5)}) {
+    const std::string text = writeObj(m, false);
+    CHECK_THAT(text, Contains("Arbor"));
+    const QuadMesh back = readObj(text, "round.obj");
+    REQUIRE(back.positions.size() == m.positions.size());
+    CHECK(back.positions == m.positions);
+    CHECK(back.normals == m.normals);
+    for (std::size_t i = 0; i < m.uvw.size(); ++i) {
+      CHECK(back.uvw[i].x == m.uvw[i].x);
+      CHECK(back.uvw[i].y == m.uvw[i].y);
+    }
+    CHECK(back.quads == m.quads);
+  }
+}
+
+TEST_CASE("OBJ triangles read back into the same quads", "[export][obj]") {
+  const QuadMesh m = tube(5);
+  const std::string text = writeObj(m, true);
+  std::size_t faceLines = 0;
+  for (std::size_t at = text.find("\nf "); at != std::string::npos; at = text.find("\nf ", at + 1)) ++faceLines;
+  CHECK(faceLines == 2 * m.quads.size());
+  const QuadMesh back = readObj(text, "triangles.obj");
+  CHECK(back.positions == m.positions);
+  CHECK(back.quads == m.quads);
+  CHECK(triangulate(back) == triangulate(m));
+}
+
+TEST_CASE("OBJ keeps awkward floats exactly", "[export][obj]") {
+  QuadMesh m = cube();
+  m.positions[3] = {0.1f, 1.0f / 3.0f, -1e-7f};
+  m.positions[5] = {123456.789f, 3.4e38f, 1.17549435e-38f};
+  m.uvw[2] = {0.7f, 1e-20f, 0.0f};
+  const QuadMesh back = readObj(writeObj(m, false), "awkward.obj");
+  CHECK(back.positions == m.positions);
+  CHECK(back.uvw[2].x == m.uvw[2].x);
+  CHECK(back.uvw[2].y == m.uvw[2].y);
+}
+
+TEST_CASE("malformed OBJ names the file and line", "[export][obj]") {
+  const std::string head = "# test\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n"
+                           "vn 0 0 1\nvn 0 0 1\nvn 0 0 1\nvn 0 0 1\n";
+  CHECK(readObj(head + "f 1/1/1 2/2/2 3/3/3 4/4/4\n", "ok.obj").quads.size() == 1);
+  CHECK_THROWS_WITH(readObj(head + "f 1/1/1 2/2/2 3/3/3 9/9/9\n", "bad.obj"), Contains("bad.obj:14") && Contains("vertex 9"));
+  CHECK_THROWS_WITH(readObj(head + "f 1/1/1 2/2/2 3/3/3 4/4/x\n", "bad.obj"), Contains("bad.obj:14"));
+  CHECK_THROWS_WITH(readObj(head + "f 1/1/1 2/2/2 3/3/3 4/3/4\n", "bad.obj"), Contains("bad.obj:14"));
+  CHECK_THROWS_WITH(readObj(head + "f 1/1/1 2/2/2 3/3/3\n", "bad.obj"), Contains("bad.obj:14") && Contains("partner"));
+  CHECK_THROWS_WITH(readObj("v 1 2\n", "bad.obj"), Contains("bad.obj:1"));
+  CHECK_THROWS_WITH(readObj("v 1 2 3e\n", "bad.obj"), Contains("bad.obj:1"));
+  CHECK_THROWS_WITH(readObj("\n\nl 1 2\n", "bad.obj"), Contains("bad.obj:3") && Contains("'l'"));
+  CHECK_THROWS_WITH(readObj("v 0 0 0\nvn 0 0 1\n", "bad.obj"), Contains("bad.obj"));
+}
+
+// ---------------------------------------------------------------- glTF / GLB
+
+TEST_CASE("GLB chunks are consistent and the buffer is y up", "[export][gltf]") {
+  const QuadMesh m = cube();
+  const Glb glb = splitGlb(writeGlb(m, "cube"));
+  const auto& doc = glb.json;
+  CHECK(doc["asset"]["version"] == "2.0");
+  CHECK(doc["asset"]["generator"] == "Arbor");
+  const auto& attributes = doc["meshes"][0]["primitives"][0]["attributes"];
+  for (const char* name : {"POSITION", "NORMAL", "TANGENT", "TEXCOORD_0", "_RADIUS", "_LEVEL", "_FLIP"}) {
+    INFO(name);
+    CHECK(attributes.contains(name));
+  }
+
+  const auto positions = accessorFloats(doc, glb.binary, attributes["POSITION"], 3);
+  REQUIRE(positions.size() == 3 * m.vertexCount());
+  int atHeightTwo = 0;
+  for (std::size_t i = 0; i < m.vertexCount(); ++i) {
+    const glm::vec3 p = m.positions[i];
+    CHECK(positions[3 * i + 0] == p.x);
+    CHECK(positions[3 * i + 1] == p.z);  // up
+    CHECK(positions[3 * i + 2] == -p.y);
+    if (p.z == 2.0f) atHeightTwo += positions[3 * i + 1] == 2.0f ? 1 : 0;
+  }
+  CHECK(atHeightTwo == 4);
+  const auto& position = doc["accessors"][attributes["POSITION"].get<int>()];
+  CHECK(position["min"] == nlohmann::json({-1.0, 0.0, -1.0}));
+  CHECK(position["max"] == nlohmann::json({1.0, 2.0, 1.0}));
+
+  const auto normals = accessorFloats(doc, glb.binary, attributes["NORMAL"], 3);
+  const auto tangents = accessorFloats(doc, glb.binary, attributes["TANGENT"], 4);
+  const auto flip = accessorFloats(doc, glb.binary, attributes["_FLIP"], 1);
+  for (std::size_t i = 0; i < m.vertexCount(); ++i) {
+    const glm::vec3 n(normals[3 * i], normals[3 * i + 1], normals[3 * i + 2]);
+    const glm::vec3 t(tangents[4 * i], tangents[4 * i + 1], tangents[4 * i + 2]);
+    CHECK(std::abs(glm::length(n) - 1.0f) < 1e-6f);
+    CHECK(std::abs(glm::length(t) - 1.0f) < 1e-6f);
+    CHECK(std::abs(glm::dot(n, t)) < 1e-6f);
+    CHECK(tangents[4 * i + 3] == 1.0f);
+    CHECK(n.y * m.normals[i].z > 0);  // the up component moved along with the positions
+    CHECK(flip[i] == m.uvw[i].z);
+  }
+  const auto& indices = doc["accessors"][doc["meshes"][0]["primitives"][0]["indices"].get<int>()];
+  CHECK(indices["componentType"] == 5125);
+  CHECK(indices["count"] == 3 * 2 * m.quads.size());
+}
+
+TEST_CASE(".gltf embeds the same buffer as the GLB", "[export][gltf]") {
+  const QuadMesh m = tube(4);
+  const auto doc = nlohmann::json::parse(writeGltf(m, "tube"));
+  const std::string uri = doc["buffers"][0]["uri"];
+  const std::string prefix = "data:application/octet-stream;base64,";
+  REQUIRE(uri.rfind(prefix, 0) == 0);
+  const std::string embedded = decodeBase64(uri.substr(prefix.size()));
+  CHECK(embedded.size() == doc["buffers"][0]["byteLength"]);
+  const Glb glb = splitGlb(writeGlb(m, "tube"));
+  CHECK(embedded == glb.binary.substr(0, embedded.size()));
+  CHECK(doc["accessors"] == glb.json["accessors"]);
+}
+
+TEST_CASE("degenerate normals and tangents still export as unit, orthogonal vectors", "[export][gltf]") {
+  QuadMesh m = cube();
+  m.normals[0] = glm::vec3(0);
+  m.tangents[1] = glm::vec3(0);
+  m.tangents[2] = m.normals[2];  // along the normal: nothing left after Gram-Schmidt
+  m.tangents[3] = glm::vec3(1, 0, 0) + m.normals[3] * 5.0f;
+  const Glb glb = splitGlb(writeGlb(m, "cube"));
+  const auto& attributes = glb.json["meshes"][0]["primitives"][0]["attributes"];
+  const auto normals = accessorFloats(glb.json, glb.binary, attributes["NORMAL"], 3);
+  const auto tangents = accessorFloats(glb.json, glb.binary, attributes["TANGENT"], 4);
+  for (std::size_t i = 0; i < 4; ++i) {
+    const glm::vec3 n(normals[3 * i], normals[3 * i + 1], normals[3 * i + 2]);
+    const glm::vec3 t(tangents[4 * i], tangents[4 * i + 1], tangents[4 * i + 2]);
+    CHECK(std::abs(glm::length(n) - 1.0f) < 1e-6f);
+    CHECK(std::abs(glm::length(t) - 1.0f) < 1e-6f);
+    CHECK(std::abs(glm::dot(n, t)) < 1e-6f);
+  }
+  // Vertex 0's replacement comes from its faces: it still points away from the cube's centre (y-up here).
+  CHECK(glm::dot(glm::vec3(normals[0], normals[1], normals[2]), glm::vec3(-1, -1, 1)) > 0);
+}
+
+TEST_CASE("glTF export refuses a mesh it cannot describe", "[export][gltf]") {
+  QuadMesh m = cube();
+  m.radius.pop_back();
+  CHECK_THROWS_AS(writeGlb(m, "short"), std::invalid_argument);
+  CHECK_THROWS_AS(writeGltf(QuadMesh{}, "empty"), std::invalid_argument);
+  QuadMesh nan = cube();
+  nan.positions[2].x = std::nanf("");
+  CHECK_THROWS_AS(writeGlb(nan, "nan"), std::invalid_argument);
+}
+
+TEST_CASE("the Khronos validator finds no errors in .gltf and .glb files", "[export][gltf][validator]") {
+  struct Case {
+    std::string file;
+    QuadMesh mesh;
+  };
+  for (const Case& c : {Case{"cube", cube()}, Case{"tube", tube(6)}, Case{"tube-smooth", subdivide(tube(6), 2)},
+                        Case{"open-tube", subdivide(tube(4, true), 1)}}) {
+    for (const bool binary : {false, true}) {
+      const std::string path = writeTemp(c.file + (binary ? ".glb" : ".gltf"),
+                                         binary ? writeGlb(c.mesh, c.file) : writeGltf(c.mesh, c.file));
+      const Run r = validate(path);
+      INFO(r.output);
+      CHECK(r.exitCode == 0);
+      CHECK_THAT(r.output, Contains(": 0 errors"));
+    }
+  }
+}
+
+TEST_CASE("the validator script fails on a file with errors and on a missing file", "[export][gltf][validator]") {
+  auto doc = nlohmann::json::parse(writeGltf(cube(), "cube"));
+  doc["accessors"][0]["max"][1] = 100.0;  // no longer the largest y in the data
+  const Run broken = validate(writeTemp("broken.gltf", doc.dump()));
+  INFO(broken.output);
+  CHECK(broken.exitCode == 1);
+  CHECK_THAT(broken.output, Contains("ACCESSOR_MAX_MISMATCH"));
+  const Run missing = validate(test::tempPath("no-such-file.glb"));
+  INFO(missing.output);
+  CHECK(missing.exitCode == 2);
+}
+
+// ---------------------------------------------------------------- subdivision
+
+TEST_CASE("one level of Catmull-Clark turns the cube into 24 closed, outward quads", "[export][subdivide]") {
+  const QuadMesh s = subdivide(cube(), 1);
+  CHECK(s.quads.size() == 24);
+  CHECK(s.vertexCount() == 8 + 12 + 6);
+  requireClosedAndOriented(s);
+  CHECK(normalsAgainstFaces(s) == 0);
+  CHECK(s.openBoundary.empty());
+  for (std::size_t i = 0; i < s.vertexCount(); ++i) {
+    CHECK(std::abs(glm::length(s.normals[i]) - 1.0f) < 1e-5f);
+    CHECK(std::abs(glm::length(s.tangents[i]) - 1.0f) < 1e-5f);
+    CHECK(std::abs(glm::dot(s.normals[i], s.tangents[i])) < 1e-5f);
+    // The limit surface of a cube lies strictly inside it.
+    const glm::vec3 p = s.positions[i] - glm::vec3(0, 0, 1);
+    CHECK(std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)}) < 1.0f);
+  }
+}
+
+TEST_CASE("two levels on the capped tube: 16x the quads, closed, oriented, attributes interpolated", "[export][subdivide]") {
+  const QuadMesh t = tube(7);
+  const QuadMesh s = subdivide(t, 2);
+  CHECK(s.quads.size() == 16 * t.quads.size());
+  requireClosedAndOriented(s);
+  CHECK(normalsAgainstFaces(s) == 0);
+  REQUIRE(s.level.size() == s.vertexCount());
+  int lower = 0, upper = 0;
+  for (std::size_t i = 0; i < s.vertexCount(); ++i) {
+    CHECK(s.level[i] <= 1);
+    (s.level[i] == 0 ? lower : upper) += 1;
+    CHECK(s.radius[i] == Approx(kTubeRadius));
+    CHECK(s.uvw[i].x >= 0.0f);
+    CHECK(s.uvw[i].x <= 1.0f);
+    // Along the tube's side the tangent still runs up the branch.
+    if (s.positions[i].z > 1.5f && s.positions[i].z < 4.5f) CHECK(s.tangents[i].z > 0.99f);
+  }
+  CHECK(lower > 0);
+  CHECK(upper > 0);
+}
+
+TEST_CASE("the middle ring of a long tube lands on the limit curve of its square", "[export][subdivide]") {
+  // Far from the caps the surface is a tensor-product cubic B-spline, straight along z, so every cross
+  // section is the closed B-spline of the square ring of radius R. Its point at a control vertex is
+  // (P[-1] + 4 P[0] + P[1]) / 6 = 2R/3 from the axis; halfway between two it is
+  // (P[-1] + 23 P[0] + 23 P[1] + P[2]) / 48 = (22/48) * sqrt(2) R = 0.6482 R. In between the radius stays
+  // between those two. Rings 2..4 of 7 are regular (the caps' valence-3 corners are two rings away),
+  // so the middle ring (z = 3) is exact up to float rounding.
+  const int rings = 7;
+  const float middle = 3 * kRingSpacing;
+  const double atVertex = 2.0 / 3.0 * kTubeRadius;
+  const double halfway = 22.0 / 48.0 * std::numbers::sqrt2 * kTubeRadius;
+  const double tolerance = 1e-5;
+  const QuadMesh s = subdivide(tube(rings), 2);
+  int onRing = 0, onAxes = 0, onDiagonals = 0;
+  for (const auto& p : s.positions) {
+    if (std::abs(p.z - middle) > 1e-4f) continue;
+    ++onRing;
+    const double r = std::hypot(double{p.x}, double{p.y});
+    CHECK(r >= halfway - tolerance);
+    CHECK(r <= atVertex + tolerance);
+    if (std::abs(p.x) < 1e-5f || std::abs(p.y) < 1e-5f) {
+      ++onAxes;
+      CHECK(r == Approx(atVertex).margin(tolerance));
+    } else if (std::abs(std::abs(p.x) - std::abs(p.y)) < 1e-5f) {
+      ++onDiagonals;
+      CHECK(r == Approx(halfway).margin(tolerance));
+    }
+  }
+  CHECK(onRing == 16);  // 4 ring edges, each split into 4 by two levels
+  CHECK(onAxes == 4);
+  CHECK(onDiagonals == 4);
+}
+
+TEST_CASE("an open base ring stays open, flat and in order", "[export][subdivide]") {
+  const QuadMesh t = tube(4, true);
+  for (const int levels : {1, 3}) {
+    const QuadMesh s = subdivide(t, levels);
+    REQUIRE(s.openBoundary.size() == t.openBoundary.size() << levels);
+    const DirectedEdges edges = directedEdges(s);
+    std::size_t boundaryEdges = 0;
+    for (const auto& [edge, count] : edges) boundaryEdges += edges.count({edge.second, edge.first}) == 0 ? 1 : 0;
+    CHECK(boundaryEdges == s.openBoundary.size());
+    for (std::size_t i = 0; i < s.openBoundary.size(); ++i) {
+      const std::uint32_t a = s.openBoundary[i], b = s.openBoundary[(i + 1) % s.openBoundary.size()];
+      // The input ring follows its quads' winding along the hole, and so does the refined one.
+      CHECK(edges.count({a, b}) == 1);
+      CHECK(edges.count({b, a}) == 0);
+      // Edge-only boundary interpolation keeps the ring on the ground instead of pulling it up the tube.
+      CHECK(std::abs(s.positions[a].z) < 1e-6f);
+    }
+  }
+}
+
+TEST_CASE("subdivision refuses non-manifold and malformed meshes", "[export][subdivide]") {
+  SECTION("three quads sharing one edge") {
+    QuadMesh fan;
+    for (int i = 0; i < 8; ++i) {
+      const float a = static_cast<float>(i);
+      addVertex(fan, {std::cos(a), std::sin(a), a}, {0, 0, 1}, {1, 0, 0}, {0, 0, 0}, 0.1f, 0);
+    }
+    fan.quads = {{0, 1, 2, 3}, {1, 0, 4, 5}, {0, 1, 6, 7}};
+    CHECK_THROWS_WITH(subdivide(fan, 1), Contains("non-manifold") && Contains("3 faces"));
+  }
+  SECTION("two neighbours wound against each other") {
+    QuadMesh flipped = cube();
+    std::swap(flipped.quads[0][1], flipped.quads[0][3]);
+    CHECK_THROWS_WITH(subdivide(flipped, 1), Contains("non-manifold"));
+  }
+  SECTION("what OpenSubdiv itself reports reaches the caller as an exception") {
+    CHECK_THROWS_WITH(subdivide(QuadMesh{}, 1), Contains("OpenSubdiv") && Contains("no vertices"));
+  }
+  SECTION("indices and level counts OpenSubdiv would not check") {
+    QuadMesh stray = cube();
+    stray.quads[2][1] = 99;
+    CHECK_THROWS_AS(subdivide(stray, 1), std::invalid_argument);
+    CHECK_THROWS_AS(subdivide(cube(), 0), std::invalid_argument);
+    CHECK_THROWS_AS(subdivide(cube(), 7), std::invalid_argument);
+    QuadMesh notARing = tube(3, true);
+    notARing.openBoundary = {0, 2, 1, 3};
+    CHECK_THROWS_AS(subdivide(notARing, 1), std::invalid_argument);
+  }
+}
