@@ -22,7 +22,8 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 constexpr std::uint64_t kStreamPlacement = 4;
-constexpr int kPruneSteps = 10;  // bisection steps: the pruned length is within 0.1 % of the original
+constexpr int kPruneSteps = 10;
+constexpr double kMaxSlenderness = 500.0;  // length / radius beyond which a child is not grown  // bisection steps: the pruned length is within 0.1 % of the original
 
 // Geometry of one stem and its clones for a trial length (pruning grows several before keeping one).
 struct Grown {
@@ -345,8 +346,9 @@ class Grower {
         const Transform base{segment.position, segment.rotation * rotationZ(azimuth) * rotationX(angle)};
         const double length = prunedLength(key, level, base, length0);
         const double childRadius = Cs * incoming;
-        // A child shorter than twice the parent's radius would end inside the parent; too thin, invisible.
-        if (length < 2.0 * incoming || childRadius < 1e-5 * tree_.treeScale) continue;
+        // A child shorter than twice the parent's radius would end inside the parent; one thinner than
+        // 1/500 of its length (where a tapering parent runs out of wood) could not carry itself.
+        if (length < 2.0 * incoming || childRadius < 1e-5 * tree_.treeScale || childRadius * kMaxSlenderness < length) continue;
 
         RawStem proto;
         proto.level = level;
@@ -371,6 +373,7 @@ class Grower {
       }
     }
     RawStem& parent = tree_.stems[pi];
+    settleTail(parent);
     parent.childCarry = carry;
     parent.childAzimuth = azimuth;
     parent.childSide = side;
@@ -393,10 +396,17 @@ class Grower {
     return local * rotationZ(sign * p_.leafBend * angle);
   }
 
+  // The taper shapes what follows the last child; a stem that splits has no tail (its clones go on).
+  static void settleTail(RawStem& stem) {
+    const double lastChild = stem.attachments.empty() ? stem.startZ() : stem.attachments.back().z;
+    stem.profile.tailStart = stem.endsInSplit ? stem.length : std::max(stem.startZ(), lastChild);
+  }
+
   void growLeavesOn(int stemIndex) {
     inheritNaturalStart(stemIndex);
     RawStem& stem = tree_.stems[static_cast<std::size_t>(stemIndex)];
     stem.naturalEnd = stem.naturalStart;
+    settleTail(stem);
     if (stem.level == 0 || p_.leaves == 0.0) return;
     Rng rng(stem.key, kStreamLeaves);
     const double q = p_.leafQuality;

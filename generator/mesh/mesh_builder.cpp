@@ -1,0 +1,645 @@
+// The mesh builder: walks the skeleton stem by stem, places four-vertex cross sections along each stem,
+// joins consecutive ones with bands of four quads, and connects children through the sides of connection
+// slabs (connection.cpp). Every child tube starts from four vertices of its parent, so the result is one
+// closed mesh without a single branch cylinder stuck inside another.
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "connection.hpp"
+#include "cross_section.hpp"
+#include "mesh_attributes.hpp"
+#include "mesh_checks.hpp"
+#include "stem_polyline.hpp"
+#include "tree_mesh.hpp"
+
+namespace arbor {
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+struct Ring {
+  std::array<std::uint32_t, 4> v{};
+  RingFrame frame;
+  Vec3 center{0.0};
+  double radius = 0;  // skeleton radius
+  double tex = 0;     // texture v
+};
+
+// Where a child tube begins: four vertices of its parent, seen counter-clockwise from outside.
+struct PortStart {
+  std::array<std::uint32_t, 4> port{};
+  Vec3 branchPoint{0.0};
+  bool top = false;   // the parent's top cross section (a split or a sub-box): leave along the child
+  Vec3 parentAxis{0.0};     // the slab's axis: a side child's tube starts once clear of the parent
+  double parentReach = 0.0; // distance of the parent's corners from that axis
+  std::size_t parentFacesBegin = 0, parentFacesEnd = 0;  // the parent stem's quads, complete by then
+};
+
+// Texture v advances by distance over the bark scale 0.2 + 0.8 r, normalised by pi (u spans half a turn).
+double texAdvance(double distance, double radius) { return distance / (kPi * (0.2 + 0.8 * radius)); }
+
+// Axis-aligned bounds: most parent faces are far from a child's first band and are skipped on these.
+struct Box {
+  Vec3 lo, hi;
+  bool overlaps(const Box& o) const {
+    return lo.x <= o.hi.x && o.lo.x <= hi.x && lo.y <= o.hi.y && o.lo.y <= hi.y && lo.z <= o.hi.z && o.lo.z <= hi.z;
+  }
+};
+
+template <std::size_t N>
+Box boxOf(const std::array<Vec3, N>& corners) {
+  Box b{corners[0], corners[0]};
+  for (const Vec3& c : corners) {
+    b.lo = glm::min(b.lo, c);
+    b.hi = glm::max(b.hi, c);
+  }
+  return b;
+}
+
+class Builder {
+ public:
+  Builder(const Skeleton& s, const MeshOptions& o, TreeMesh& out) : sk_(s), opt_(o), out_(out) {}
+
+  void run() {
+    const std::size_t vertices = out_.mesh.positions.capacity();
+    uvwSum_.reserve(vertices);
+    uvwCount_.reserve(vertices);
+    portUse_.reserve(vertices);
+    stemsAt_.assign(sk_.nodes.size(), {});
+    std::vector<int> trunks;
+    for (std::size_t i = 0; i < sk_.stems.size(); ++i) {
+      const SkeletonStem& st = sk_.stems[i];
+      if (!meshed(static_cast<int>(i))) continue;
+      if (st.attachNode >= 0) stemsAt_[static_cast<std::size_t>(st.attachNode)].push_back(static_cast<int>(i));
+      else trunks.push_back(static_cast<int>(i));
+    }
+    const bool rooted = !sk_.nodes.empty() && sk_.nodes[0].kind == NodeKind::Root;
+    if (rooted) buildRoot(stemsAt_[0]);
+    else
+      for (int t : trunks) buildStem(t, nullptr);
+    finish();
+  }
+
+ private:
+  const Skeleton& sk_;
+  const MeshOptions& opt_;
+  TreeMesh& out_;
+  std::vector<std::vector<int>> stemsAt_;  // per node: meshed stems whose first edge leaves it
+  std::vector<Vec3> uvwSum_;
+  std::vector<int> uvwCount_;
+  std::vector<std::uint8_t> portUse_;      // per vertex: how many ports it is a corner of
+  int currentStem_ = -1;                   // stem whose faces are being emitted
+  std::vector<std::pair<int, PortStart>>* deferred_ = nullptr;  // children waiting for their parent
+  std::vector<Box> boxes_;
+  std::size_t boxesBegin_ = 0, boxesEnd_ = 0;
+
+  bool meshed(int stem) const {
+    return opt_.levels <= 0 || sk_.stems[static_cast<std::size_t>(stem)].level < opt_.levels;
+  }
+
+  // ---- vertices, rings, faces ----
+
+  std::uint32_t addVertex(const Vec3& p, double radius, int level, const Vec3& tangent) {
+    QuadMesh& m = out_.mesh;
+    m.positions.emplace_back(p);
+    m.tangents.emplace_back(tangent);
+    m.radius.push_back(static_cast<float>(radius));
+    m.level.push_back(static_cast<std::uint8_t>(level));
+    uvwSum_.emplace_back(0.0);
+    uvwCount_.push_back(0);
+    portUse_.push_back(0);
+    return static_cast<std::uint32_t>(m.positions.size() - 1);
+  }
+
+  void addUvw(std::uint32_t v, int corner, double tex) {
+    uvwSum_[v] += Vec3(kRingU[static_cast<std::size_t>(corner)], tex, kRingFlip[static_cast<std::size_t>(corner)]);
+    ++uvwCount_[v];
+  }
+
+  Vec3 position(std::uint32_t v) const { return Vec3(out_.mesh.positions[v]); }
+
+  Ring emitRing(int stem, const Vec3& center, const RingFrame& frame, double radius, double tex) {
+    Ring r;
+    r.frame = frame;
+    r.center = center;
+    r.radius = radius;
+    r.tex = tex;
+    const int level = sk_.stems[static_cast<std::size_t>(stem)].level;
+    const auto offsets = ringOffsets(frame, radius * opt_.limitCompensation);
+    for (int k = 0; k < 4; ++k) {
+      r.v[static_cast<std::size_t>(k)] = addVertex(center + offsets[static_cast<std::size_t>(k)], radius, level, frame.T);
+      addUvw(r.v[static_cast<std::size_t>(k)], k, tex);
+    }
+    out_.rings.push_back(MeshRing{stem, r.v, center, tex, radius});
+    return r;
+  }
+
+  void addQuad(std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d) {
+    out_.mesh.quads.push_back({a, b, c, d});
+    out_.quadStem.push_back(currentStem_);
+  }
+
+  // Side k of the band between rings a and b, counter-clockwise from outside.
+  static std::array<std::uint32_t, 4> side(const Ring& a, const Ring& b, int k) {
+    const auto i = static_cast<std::size_t>(k), j = static_cast<std::size_t>((k + 1) % 4);
+    return {a.v[i], a.v[j], b.v[j], b.v[i]};
+  }
+
+  void band(const Ring& a, const Ring& b, const std::array<bool, 4>& skip = {}) {
+    for (int k = 0; k < 4; ++k) {
+      if (skip[static_cast<std::size_t>(k)]) continue;
+      const auto q = side(a, b, k);
+      addQuad(q[0], q[1], q[2], q[3]);
+    }
+  }
+
+  Vec3 faceCenter(const std::array<std::uint32_t, 4>& q) const {
+    return (position(q[0]) + position(q[1]) + position(q[2]) + position(q[3])) * 0.25;
+  }
+
+  Vec3 faceNormal(const std::array<std::uint32_t, 4>& q) const {
+    const Vec3 n = glm::cross(position(q[2]) - position(q[0]), position(q[3]) - position(q[1]));
+    return glm::normalize(n);
+  }
+
+  // ---- stems ----
+
+  // A stem is built whole before its children, so that each child can be fitted against all of its
+  // parent's faces; `start` is null for a trunk standing on the ground.
+  void buildStem(int stem, const PortStart* start) {
+    std::vector<std::pair<int, PortStart>> children;
+    auto* outerDeferred = deferred_;
+    const int outer = currentStem_;
+    deferred_ = &children;
+    currentStem_ = stem;
+    const std::size_t begin = out_.mesh.quads.size();
+    buildStemFaces(stem, start);
+    buildChildren(children, begin);
+    currentStem_ = outer;
+    deferred_ = outerDeferred;
+  }
+
+  void buildChildren(std::vector<std::pair<int, PortStart>>& children, std::size_t parentBegin) {
+    const std::size_t parentEnd = out_.mesh.quads.size();
+    for (auto& [child, start] : children) {
+      start.parentFacesBegin = parentBegin;
+      start.parentFacesEnd = parentEnd;
+      buildStem(child, &start);
+    }
+  }
+
+  void buildStemFaces(int stem, const PortStart* start) {
+    const StemPolyline poly(sk_, stem);
+    Ring last;
+    double sLo = 0.0, slabStart = 0.0;
+    if (!start) {
+      const RingFrame frame = frameFromHint(poly.startDirection(), Vec3(1, 0, 0));
+      last = emitRing(stem, poly.position(0.0), frame, poly.radius(0.0), 0.0);
+      if (opt_.openBase) out_.mesh.openBoundary.assign(last.v.begin(), last.v.end());
+      else addQuad(last.v[3], last.v[2], last.v[1], last.v[0]);
+    } else {
+      last = leavePort(stem, poly, *start, sLo, slabStart);
+    }
+    continueStem(stem, poly, last, sLo, slabStart);
+  }
+
+  // The child's first cross section sits just outside the port, leaving between the port's normal and
+  // the child's direction; a child that points backwards leaves straight out first (backward connection).
+  Ring leavePort(int stem, const StemPolyline& poly, const PortStart& start, double& sLo, double& slabStart) {
+    const auto& q = start.port;
+    Ring port;
+    port.v = q;
+    const Vec3 center = faceCenter(q);
+    const Vec3 normal = faceNormal(q);
+    Vec3 n = glm::normalize(position(q[0]) - position(q[2]));
+    Vec3 b = position(q[1]) - position(q[3]);
+    b = glm::normalize(b - n * glm::dot(b, n));
+    port.frame = RingFrame{glm::cross(n, b), n, b};
+    port.center = center;
+    double portRadius = 0.0;
+    for (std::uint32_t v : q) portRadius += 0.25 * glm::distance(position(v), center);
+    port.tex = 0.0;
+    for (std::uint32_t v : q) port.tex += 0.25 * uvwSum_[v].y / std::max(1, uvwCount_[v]);
+
+    const Vec3 d = poly.startDirection();
+    const double rc = poly.radius(0.0);
+    // The first cross section must clear the port by its own size, or its tube grazes the parent.
+    const Vec3 exitDir = start.top ? glm::normalize(normal + d)
+                                   : (glm::dot(d, normal) > 0.2 ? glm::normalize(2.0 * normal + d) : normal);
+    const double e = std::max(2.0 * rc * opt_.limitCompensation, 0.35 * portRadius);
+    const Vec3 exitCenter = center + exitDir * e;
+    for (int k = 0; k < 4; ++k) addUvw(q[static_cast<std::size_t>(k)], k, port.tex);  // child-then-parent averaging
+
+    const RingFrame exitFrame = transportFrame(port.frame, glm::normalize(exitDir + d));
+    const Ring exit = emitRing(stem, exitCenter, exitFrame, rc, port.tex + texAdvance(e, rc));
+    band(port, exit);
+    sLo = poly.firstBeyond(start.branchPoint, glm::distance(exitCenter, start.branchPoint) + 0.5 * rc);
+    if (!start.top) {
+      // A child at a small angle runs along its parent; its tube begins where its skeleton has left the parent.
+      const double clearance = start.parentReach + rc * opt_.limitCompensation;
+      sLo = std::max(sLo, poly.firstClearOf(start.branchPoint, start.parentAxis, clearance));
+    }
+    // The band from the first cross section to the next must not cut any face of the parent: move the next
+    // cross section along the skeleton until it does not.
+    sLo = clearOfParent(poly, start, exitFrame, exit, sLo, 0.25 * std::max(portRadius, rc));
+    // The neck from the port widens towards the parent: grandchildren connect beyond its width.
+    slabStart = std::min(sLo + portRadius, poly.length());
+    return exit;
+  }
+
+  // Corners of the cross section a stem would get at arc length s, continuing from `from`.
+  std::array<Vec3, 4> ringCorners(const StemPolyline& poly, const RingFrame& from, double s) const {
+    const RingFrame frame = transportFrame(from, poly.direction(s));
+    const auto offsets = ringOffsets(frame, std::max(poly.radius(s), 1e-5 * sk_.treeScale) * opt_.limitCompensation);
+    const Vec3 c = poly.position(s);
+    return {c + offsets[0], c + offsets[1], c + offsets[2], c + offsets[3]};
+  }
+
+  // Bounding boxes of the parent's faces, kept while its children are fitted.
+  const std::vector<Box>& parentBoxes(std::size_t begin, std::size_t end) {
+    if (boxesBegin_ != begin || boxesEnd_ != end) {
+      boxes_.clear();
+      for (std::size_t f = begin; f < end; ++f) {
+        const auto& q = out_.mesh.quads[f];
+        boxes_.push_back(boxOf(std::array<Vec3, 4>{position(q[0]), position(q[1]), position(q[2]), position(q[3])}));
+      }
+      boxesBegin_ = begin;
+      boxesEnd_ = end;
+    }
+    return boxes_;
+  }
+
+  double clearOfParent(const StemPolyline& poly, const PortStart& start, const RingFrame& exitFrame, const Ring& exit,
+                       double s, double step) {
+    if (start.parentFacesEnd <= start.parentFacesBegin) return s;
+    const auto& boxes = parentBoxes(start.parentFacesBegin, start.parentFacesEnd);
+    std::array<Vec3, 4> exitCorners;
+    for (int k = 0; k < 4; ++k) exitCorners[static_cast<std::size_t>(k)] = position(exit.v[static_cast<std::size_t>(k)]);
+    for (; s < poly.length(); s += step) {
+      const auto next = ringCorners(poly, exitFrame, s);
+      const Box band = boxOf(std::array<Vec3, 8>{exitCorners[0], exitCorners[1], exitCorners[2], exitCorners[3],
+                                                 next[0], next[1], next[2], next[3]});
+      bool clear = true;
+      for (std::size_t f = 0; f < boxes.size() && clear; ++f) {
+        if (!band.overlaps(boxes[f])) continue;
+        const auto& q = out_.mesh.quads[start.parentFacesBegin + f];
+        const std::array<Vec3, 4> face{position(q[0]), position(q[1]), position(q[2]), position(q[3])};
+        for (int k = 0; k < 4 && clear; ++k) {
+          const auto i = static_cast<std::size_t>(k), j = static_cast<std::size_t>((k + 1) % 4);
+          clear = !quadsIntersect(std::array<Vec3, 4>{exitCorners[i], exitCorners[j], next[j], next[i]}, face);
+        }
+      }
+      if (clear) return s;
+    }
+    return poly.length();
+  }
+
+  struct Slab {
+    double lo = 0, hi = 0, center = 0, h = 0;
+    double need = 0;  // radius its cross sections need to hold its largest child
+    int node = -1;
+    std::vector<int> children;
+  };
+
+  void continueStem(int stem, const StemPolyline& poly, Ring last, double sLo, double slabStart) {
+    const SkeletonStem& st = sk_.stems[static_cast<std::size_t>(stem)];
+    const int lastNode = st.firstNode + st.nodeCount - 1;
+    const bool split = sk_.nodes[static_cast<std::size_t>(lastNode)].kind == NodeKind::Split &&
+                       !stemsAt_[static_cast<std::size_t>(lastNode)].empty();
+    const double sEnd = poly.length();
+
+    // Connection slabs around each attachment with meshed children, merged where they would overlap.
+    std::vector<Slab> slabs;
+    for (int i = 0; i < poly.pointCount(); ++i) {
+      const int node = poly.node(i);
+      if (node == st.attachNode || node == lastNode) continue;
+      const auto& children = stemsAt_[static_cast<std::size_t>(node)];
+      if (children.empty()) continue;
+      const double s = poly.arcLength(i);
+      const double ra = poly.radius(s - 1e-9);
+      double rc = 0.0;
+      for (int c : children) rc = std::max(rc, sk_.stems[static_cast<std::size_t>(c)].startRadius);
+      const double h = std::clamp(1.2 * rc, 0.3 * ra, ra);
+      Slab slab{s - h, s + h, s, h, rc, node, children};
+      if (!slabs.empty() && slab.center - slabs.back().center < 0.6 * (slab.h + slabs.back().h) &&
+          slabs.back().children.size() + children.size() <= 3) {
+        Slab& prev = slabs.back();  // too close for a slab each: one slab carries up to three (a side spare)
+        prev.children.insert(prev.children.end(), children.begin(), children.end());
+        prev.hi = std::max(prev.hi, slab.hi);
+        prev.h = std::max(prev.h, slab.h);
+        prev.need = std::max(prev.need, slab.need);
+        continue;
+      }
+      slabs.push_back(std::move(slab));
+    }
+    // Overlapping slabs of one child each share a cross section; busier ones keep a band between them,
+    // so no corner ever belongs to more than two ports.
+    for (std::size_t j = 1; j < slabs.size(); ++j) {
+      Slab& a = slabs[j - 1];
+      Slab& b = slabs[j];
+      if (b.lo < a.hi && a.children.size() == 1 && b.children.size() == 1) {
+        const double mid = 0.5 * (a.center + b.center);
+        a.hi = mid;
+        b.lo = mid;
+      }
+    }
+
+    // Forward pass: every ring at least a quarter radius after the previous one (the stem may lengthen).
+    auto gap = [&](double s) { return std::max(0.25 * poly.radius(std::min(s, sEnd)), 1e-6 * sk_.treeScale); };
+    double cursor = std::max(sLo, slabStart - gap(slabStart));
+    for (std::size_t j = 0; j < slabs.size(); ++j) {
+      Slab& slab = slabs[j];
+      const bool shared = j > 0 && slab.lo == slabs[j - 1].hi;
+      slab.lo = shared ? cursor : std::max(slab.lo, cursor + gap(cursor));
+      slab.hi = std::max(slab.hi, slab.lo + slab.h);
+      cursor = slab.hi;
+    }
+
+    // Plain cross sections at the stem's own nodes outside slabs, then extra ones for even spacing.
+    std::vector<std::pair<double, int>> stations;  // arc length, slab index ending there (-1: plain)
+    auto addPlain = [&](double s) {
+      for (const Slab& slab : slabs) {
+        if (s > slab.lo - gap(slab.lo) && s < slab.hi + gap(slab.hi)) return;
+      }
+      if (s > sLo + gap(sLo)) stations.emplace_back(s, -2);
+    };
+    for (int i = 0; i < poly.pointCount(); ++i) {
+      const int node = poly.node(i);
+      if (node == st.attachNode || node == lastNode) continue;
+      // Intermediate nodes pin the surface next to a joint; the slab's own cross sections do that here.
+      const NodeKind kind = sk_.nodes[static_cast<std::size_t>(node)].kind;
+      if (kind == NodeKind::Before || kind == NodeKind::After) continue;
+      addPlain(poly.arcLength(i));
+    }
+    for (std::size_t j = 0; j < slabs.size(); ++j) {
+      if (j == 0 || slabs[j].lo != slabs[j - 1].hi) stations.emplace_back(slabs[j].lo, -1);
+      stations.emplace_back(slabs[j].hi, static_cast<int>(j));
+    }
+    std::stable_sort(stations.begin(), stations.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+
+    double endS = sEnd;
+    Slab splitSlab;
+    if (split) {
+      const auto& clones = stemsAt_[static_cast<std::size_t>(lastNode)];
+      double rc = 0.0;
+      for (int c : clones) rc = std::max(rc, sk_.stems[static_cast<std::size_t>(c)].startRadius);
+      const double ra = poly.radius(sEnd);
+      splitSlab.h = std::clamp(1.2 * rc, 0.5 * ra, ra);
+      splitSlab.node = lastNode;
+      splitSlab.need = rc;
+      splitSlab.children = clones;
+      const double after = stations.empty() ? sLo : stations.back().first;
+      splitSlab.lo = std::max(sEnd - splitSlab.h, after + gap(after));
+      splitSlab.hi = splitSlab.lo + 2.0 * splitSlab.h;
+      endS = splitSlab.lo;
+    } else {
+      const double after = stations.empty() ? sLo : stations.back().first;
+      endS = std::max(sEnd, after + gap(after));
+    }
+    while (!stations.empty() && stations.back().first > endS - gap(endS) * 0.5) {
+      if (stations.back().second == -2) stations.pop_back();
+      else break;
+    }
+    stations.emplace_back(endS, split ? -3 : -4);
+
+    double previousS = sLo;
+    for (const auto& [s, role] : stations) {
+      // Extra cross sections where the spacing limits ask for them (never inside a slab).
+      if (role < 0) {  // a slab's own band gets no extra cross sections
+        const double span = s - previousS;
+        // Towards a tip, and on hair-thin twigs, the radius vanishes; floors keep the count sensible.
+        const double r = std::max({poly.radius(0.5 * (s + previousS)), 0.5 * poly.radius(0.0), poly.length() / 48.0});
+        double limit = opt_.ringSpacing > 0.0 ? opt_.ringSpacing * std::max(r, 1e-6) : span;
+        if (opt_.maxRingDistance > 0.0) limit = std::min(limit, opt_.maxRingDistance);
+        const int extra = limit > 0.0 ? std::max(0, static_cast<int>(std::ceil(span / limit)) - 1) : 0;
+        for (int k = 1; k <= extra; ++k) last = advance(stem, poly, last, previousS + span * k / (extra + 1));
+      }
+      if (role == -4) {
+        // Tip: a last cross section (never thinner than a third of the one before) and a cap.
+        const Vec3 p = poly.position(s);
+        const double r = std::max(poly.radius(std::min(s, sEnd)), 0.35 * last.radius);
+        const RingFrame frame = transportFrame(last.frame, poly.endDirection());
+        const Ring tip = emitRing(stem, p, frame, r, last.tex + texAdvance(glm::distance(p, last.center), r));
+        band(last, tip);
+        addQuad(tip.v[0], tip.v[1], tip.v[2], tip.v[3]);
+        return;
+      }
+      if (role == -3) {
+        const Ring lo = makeRing(stem, poly, last, s, splitSlab.need);
+        band(last, lo);
+        connectSplit(stem, poly, lo, splitSlab);
+        return;
+      }
+      const Ring next = makeRing(stem, poly, last, s, role >= -1 ? slabNeed(slabs, s) : 0.0);
+      if (role >= 0) connectSlab(stem, last, next, slabs[static_cast<std::size_t>(role)]);
+      else band(last, next);
+      last = next;
+      previousS = s;
+    }
+  }
+
+  // minRadius: a slab's cross sections must hold its children, even where the stem tapers to a point.
+  static double slabNeed(const std::vector<Slab>& slabs, double s) {
+    double need = 0.0;
+    for (const Slab& slab : slabs) {
+      if (slab.lo == s || slab.hi == s) need = std::max(need, slab.need);
+    }
+    return need;
+  }
+
+  Ring makeRing(int stem, const StemPolyline& poly, const Ring& last, double s, double minRadius = 0.0) {
+    const Vec3 p = poly.position(s);
+    const double r = std::max({poly.radius(s), minRadius, 1e-5 * sk_.treeScale});
+    const RingFrame frame = transportFrame(last.frame, poly.direction(s));
+    return emitRing(stem, p, frame, r, last.tex + texAdvance(glm::distance(p, last.center), 0.5 * (r + last.radius)));
+  }
+
+  Ring advance(int stem, const StemPolyline& poly, const Ring& last, double s) {
+    const Ring next = makeRing(stem, poly, last, s);
+    band(last, next);
+    return next;
+  }
+
+  // ---- connections ----
+
+  std::array<bool, 4> allowedSides(const Ring& lo, const Ring& hi) const {
+    std::array<bool, 4> allowed{};
+    for (int k = 0; k < 4; ++k) {
+      bool ok = true;
+      for (std::uint32_t v : side(lo, hi, k)) ok = ok && portUse_[v] < 2;
+      allowed[static_cast<std::size_t>(k)] = ok;
+    }
+    return allowed;
+  }
+
+  std::vector<PortRequest> requestsFor(const std::vector<int>& children) const {
+    std::vector<PortRequest> requests;
+    for (int c : children) {
+      // The direction of the child's first edge, from its attach node to its first own node.
+      const SkeletonStem& st = sk_.stems[static_cast<std::size_t>(c)];
+      const Vec3 from = sk_.nodes[static_cast<std::size_t>(st.attachNode)].world.position;
+      const Vec3 to = sk_.nodes[static_cast<std::size_t>(st.firstNode)].world.position;
+      requests.push_back(PortRequest{glm::normalize(to - from), st.startRadius});
+    }
+    return requests;
+  }
+
+  // Assigns children to the sides (and top, if `top` is given) of the slab between lo and hi, emits the
+  // quads that stay, and builds the children.
+  void connect(int parentStem, int node, const Ring& lo, const Ring& hi, const std::vector<int>& children,
+               const Ring* top, bool roof) {
+    const Vec3 axis = glm::normalize(hi.center - lo.center);
+    const Vec3 slabCenter = 0.5 * (lo.center + hi.center);
+    std::array<Vec3, 4> normals;
+    for (int k = 0; k < 4; ++k) normals[static_cast<std::size_t>(k)] = glm::normalize(faceCenter(side(lo, hi, k)) - slabCenter);
+    const auto requests = requestsFor(children);
+    const PortAssignment a = assignPorts(normals, axis, requests, allowedSides(lo, hi), top != nullptr);
+
+    if (roof && top && a.top >= 0) {
+      int used = -1, count = 0;
+      for (int k = 0; k < 4; ++k) {
+        if (!a.sides[static_cast<std::size_t>(k)].empty()) { used = k; ++count; }
+      }
+      if (count == 1) raiseRoof(lo, hi, used);
+    }
+
+    MeshJoint joint;
+    joint.node = node;
+    joint.parentStem = parentStem;
+    joint.childStems = children;
+    joint.center = sk_.nodes[static_cast<std::size_t>(node)].world.position;
+    joint.radius = sk_.nodes[static_cast<std::size_t>(node)].radius;
+
+    std::array<bool, 4> skip{};
+    for (int k = 0; k < 4; ++k) skip[static_cast<std::size_t>(k)] = !a.sides[static_cast<std::size_t>(k)].empty();
+    band(lo, hi, skip);
+
+    std::vector<std::pair<std::array<std::uint32_t, 4>, std::vector<int>>> ports;
+    for (int k = 0; k < 4; ++k) {
+      const auto& on = a.sides[static_cast<std::size_t>(k)];
+      if (on.empty()) continue;
+      std::vector<int> stems;
+      for (int r : on) stems.push_back(children[static_cast<std::size_t>(r)]);
+      const auto q = side(lo, hi, k);
+      for (std::uint32_t v : q) ++portUse_[v];
+      ports.emplace_back(q, std::move(stems));
+    }
+    const Vec3 branchPoint = joint.center;
+    if (top && a.top >= 0) {
+      deferred_->emplace_back(children[static_cast<std::size_t>(a.top)], PortStart{top->v, branchPoint, true, axis, 0.0});
+    }
+    const double reach = std::max(lo.radius, hi.radius) * opt_.limitCompensation;
+    for (auto& [q, stems] : ports) {
+      if (stems.size() == 1) {
+        deferred_->emplace_back(stems[0], PortStart{q, branchPoint, false, axis, reach});
+      } else {
+        ++joint.subBoxes;
+        subBox(parentStem, node, q, stems);
+      }
+    }
+    out_.joints.push_back(std::move(joint));
+  }
+
+  void connectSlab(int stem, const Ring& lo, const Ring& hi, const Slab& slab) {
+    connect(stem, slab.node, lo, hi, slab.children, nullptr, false);
+  }
+
+  // An equal split (Nystad app. D): the clones leave through the top and the sides of a last slab;
+  // with two clones the slab is shaped as a roof so that both leave at similar angles.
+  void connectSplit(int stem, const StemPolyline& poly, const Ring& lo, const Slab& slab) {
+    const Vec3 dir = poly.endDirection();
+    const Vec3 p = lo.center + dir * (slab.hi - slab.lo);
+    const RingFrame frame = transportFrame(lo.frame, dir);
+    const Ring hi = emitRing(stem, p, frame, lo.radius, lo.tex + texAdvance(slab.hi - slab.lo, lo.radius));
+    connect(stem, slab.node, lo, hi, slab.children, &hi, slab.children.size() == 2);
+  }
+
+  // Moves the top corners so the side in use tilts up and the top tilts away from it.
+  void raiseRoof(const Ring& lo, const Ring& hi, int used) {
+    const double height = glm::distance(lo.center, hi.center);
+    const Vec3 axis = glm::normalize(hi.center - lo.center);
+    const Vec3 n = glm::normalize(faceCenter(side(lo, hi, used)) - 0.5 * (lo.center + hi.center));
+    for (int k = 0; k < 4; ++k) {
+      glm::vec3& p = out_.mesh.positions[hi.v[static_cast<std::size_t>(k)]];
+      Vec3 q(p);
+      const bool near = k == used || k == (used + 1) % 4;
+      if (near) {
+        q -= n * (0.8 * glm::dot(q - hi.center, n));
+        q += axis * (0.3 * height);
+      } else {
+        q -= axis * (0.5 * height);
+      }
+      p = glm::vec3(q);
+    }
+  }
+
+  // Several children want one side: that side grows a small box of its own whose top and sides they share.
+  void subBox(int parentStem, int node, const std::array<std::uint32_t, 4>& q, const std::vector<int>& children) {
+    const Vec3 center = faceCenter(q);
+    const Vec3 n = faceNormal(q);
+    double rho = 0.0;
+    for (std::uint32_t v : q) rho += 0.25 * glm::distance(position(v), center);
+    Ring port;
+    port.v = q;
+    Vec3 fn = glm::normalize(position(q[0]) - position(q[2]));
+    Vec3 fb = position(q[1]) - position(q[3]);
+    fb = glm::normalize(fb - fn * glm::dot(fb, fn));
+    port.frame = RingFrame{glm::cross(fn, fb), fn, fb};
+    port.center = center;
+    for (std::uint32_t v : q) port.tex += 0.25 * uvwSum_[v].y / std::max(1, uvwCount_[v]);
+    const RingFrame frame = transportFrame(port.frame, n);
+    const double r = 0.8 * rho / opt_.limitCompensation;
+    const Ring a = emitRing(parentStem, center + n * (0.5 * rho), frame, r, port.tex + texAdvance(0.5 * rho, r));
+    band(port, a);
+    const Ring b = emitRing(parentStem, center + n * (1.5 * rho), frame, r, a.tex + texAdvance(rho, r));
+    connect(parentStem, node, a, b, children, &b, false);
+  }
+
+  // Several trunks meet in a root node: a capped hub whose top and sides they leave from.
+  void buildRoot(const std::vector<int>& trunks) {
+    if (trunks.empty()) return;
+    double rho = 0.0;
+    for (int t : trunks) rho = std::max(rho, sk_.stems[static_cast<std::size_t>(t)].startRadius);
+    const Vec3 origin = sk_.nodes[0].world.position;
+    const RingFrame frame = frameFromHint(kUp, Vec3(1, 0, 0));
+    const Ring base = emitRing(trunks[0], origin, frame, 1.5 * rho, 0.0);
+    if (opt_.openBase) out_.mesh.openBoundary.assign(base.v.begin(), base.v.end());
+    else addQuad(base.v[3], base.v[2], base.v[1], base.v[0]);
+    const Ring top = emitRing(trunks[0], origin + kUp * (3.0 * rho), frame, 1.5 * rho, texAdvance(3.0 * rho, rho));
+    std::vector<std::pair<int, PortStart>> children;
+    deferred_ = &children;
+    connect(-1, 0, base, top, trunks, &top, false);
+    buildChildren(children, 0);
+    deferred_ = nullptr;
+  }
+
+  void finish() {
+    QuadMesh& m = out_.mesh;
+    m.uvw.resize(m.positions.size());
+    for (std::size_t i = 0; i < m.positions.size(); ++i) {
+      m.uvw[i] = glm::vec3(uvwSum_[i] / static_cast<double>(std::max(1, uvwCount_[i])));
+    }
+    computeNormals(m);
+  }
+};
+
+}  // namespace
+
+TreeMesh buildTreeMesh(const Skeleton& skeleton, const MeshOptions& options) {
+  TreeMesh out;
+  // About four cross sections per skeleton node at most; growing these vectors would cost page faults.
+  const std::size_t vertices = skeleton.nodes.size() * 16;
+  out.mesh.positions.reserve(vertices);
+  out.mesh.tangents.reserve(vertices);
+  out.mesh.radius.reserve(vertices);
+  out.mesh.level.reserve(vertices);
+  out.mesh.quads.reserve(vertices);
+  out.quadStem.reserve(vertices);
+  out.rings.reserve(vertices / 4);
+  Builder(skeleton, options, out).run();
+  return out;
+}
+
+}  // namespace arbor

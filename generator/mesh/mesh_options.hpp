@@ -1,0 +1,16 @@
+#pragma once
+// Choices the mesh stage leaves to the user (arbor generate --ring-spacing, --open-base, ...).
+
+namespace arbor {
+
+struct MeshOptions {
+  double ringSpacing = 0.0;       // largest distance between cross sections, in local radii (0: off)
+  double maxRingDistance = 0.0;   // and in metres (0: no absolute limit); uniform density for displacement
+  bool openBase = false;          // leave the ring at the trunk base open (the mesh is otherwise closed)
+  int levels = 0;                 // mesh stems of levels < this only (0: all); impostors draw the rest
+  // Control cross sections are enlarged so that the Catmull-Clark limit of a four-vertex ring (between
+  // 0.648 and 0.667 of its control radius) has about the skeleton's radius.
+  double limitCompensation = 1.0 / 0.657;
+};
+
+}  // namespace arbor
