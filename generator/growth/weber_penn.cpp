@@ -23,7 +23,8 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 constexpr std::uint64_t kStreamPlacement = 4;
 constexpr int kPruneSteps = 10;
-constexpr double kMaxSlenderness = 500.0;  // length / radius beyond which a child is not grown  // bisection steps: the pruned length is within 0.1 % of the original
+constexpr double kMaxSlenderness = 500.0;  // length / radius beyond which a child is not grown
+constexpr double kMinStubness = 25.0;      // length / radius below which a child is not grown  // bisection steps: the pruned length is within 0.1 % of the original
 
 // Geometry of one stem and its clones for a trial length (pruning grows several before keeping one).
 struct Grown {
@@ -346,9 +347,13 @@ class Grower {
         const Transform base{segment.position, segment.rotation * rotationZ(azimuth) * rotationX(angle)};
         const double length = prunedLength(key, level, base, length0);
         const double childRadius = Cs * incoming;
-        // A child shorter than twice the parent's radius would end inside the parent; one thinner than
-        // 1/500 of its length (where a tapering parent runs out of wood) could not carry itself.
-        if (length < 2.0 * incoming || childRadius < 1e-5 * tree_.treeScale || childRadius * kMaxSlenderness < length) continue;
+        // Not grown: a child shorter than twice the parent's radius (it would end inside the parent), a stub
+        // shorter than 25 of its own radii (pruning leaves these), and one thinner than 1/500 of its length
+        // (where a tapering parent runs out of wood: it could not carry itself).
+        if (length < 2.0 * incoming || length < kMinStubness * childRadius || childRadius < 1e-5 * tree_.treeScale ||
+            childRadius * kMaxSlenderness < length) {
+          continue;
+        }
 
         RawStem proto;
         proto.level = level;

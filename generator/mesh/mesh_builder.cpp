@@ -8,6 +8,7 @@
 
 #include "connection.hpp"
 #include "cross_section.hpp"
+#include "face_grid.hpp"
 #include "mesh_attributes.hpp"
 #include "mesh_checks.hpp"
 #include "stem_polyline.hpp"
@@ -39,24 +40,6 @@ struct PortStart {
 
 // Texture v advances by distance over the bark scale 0.2 + 0.8 r, normalised by pi (u spans half a turn).
 double texAdvance(double distance, double radius) { return distance / (kPi * (0.2 + 0.8 * radius)); }
-
-// Axis-aligned bounds: most parent faces are far from a child's first band and are skipped on these.
-struct Box {
-  Vec3 lo, hi;
-  bool overlaps(const Box& o) const {
-    return lo.x <= o.hi.x && o.lo.x <= hi.x && lo.y <= o.hi.y && o.lo.y <= hi.y && lo.z <= o.hi.z && o.lo.z <= hi.z;
-  }
-};
-
-template <std::size_t N>
-Box boxOf(const std::array<Vec3, N>& corners) {
-  Box b{corners[0], corners[0]};
-  for (const Vec3& c : corners) {
-    b.lo = glm::min(b.lo, c);
-    b.hi = glm::max(b.hi, c);
-  }
-  return b;
-}
 
 class Builder {
  public:
@@ -92,8 +75,8 @@ class Builder {
   std::vector<std::uint8_t> portUse_;      // per vertex: how many ports it is a corner of
   int currentStem_ = -1;                   // stem whose faces are being emitted
   std::vector<std::pair<int, PortStart>>* deferred_ = nullptr;  // children waiting for their parent
-  std::vector<Box> boxes_;
-  std::size_t boxesBegin_ = 0, boxesEnd_ = 0;
+  FaceGrid grid_;
+  std::size_t gridBegin_ = 0, gridEnd_ = 0;
 
   bool meshed(int stem) const {
     return opt_.levels <= 0 || sk_.stems[static_cast<std::size_t>(stem)].level < opt_.levels;
@@ -159,6 +142,20 @@ class Builder {
     return (position(q[0]) + position(q[1]) + position(q[2]) + position(q[3])) * 0.25;
   }
 
+  // A port seen as a cross section: its corners are ring corners 0..3, so N and B point at corners 0 and 1.
+  // A port is rarely square; N and B are the orthonormal pair that splits the angle between its diagonals.
+  Ring portRing(const std::array<std::uint32_t, 4>& q) const {
+    Ring port;
+    port.v = q;
+    port.center = faceCenter(q);
+    const Vec3 a = glm::normalize(position(q[0]) - position(q[2]));
+    const Vec3 b = glm::normalize(position(q[1]) - position(q[3]));
+    const Vec3 sum = glm::normalize(a + b), difference = glm::normalize(a - b);
+    const Vec3 n = glm::normalize(sum + difference), bi = glm::normalize(sum - difference);
+    port.frame = RingFrame{glm::cross(n, bi), n, bi};
+    return port;
+  }
+
   Vec3 faceNormal(const std::array<std::uint32_t, 4>& q) const {
     const Vec3 n = glm::cross(position(q[2]) - position(q[0]), position(q[3]) - position(q[1]));
     return glm::normalize(n);
@@ -202,22 +199,16 @@ class Builder {
     } else {
       last = leavePort(stem, poly, *start, sLo, slabStart);
     }
-    continueStem(stem, poly, last, sLo, slabStart);
+    continueStem(stem, poly, last, sLo, slabStart, start);
   }
 
   // The child's first cross section sits just outside the port, leaving between the port's normal and
   // the child's direction; a child that points backwards leaves straight out first (backward connection).
   Ring leavePort(int stem, const StemPolyline& poly, const PortStart& start, double& sLo, double& slabStart) {
     const auto& q = start.port;
-    Ring port;
-    port.v = q;
-    const Vec3 center = faceCenter(q);
+    Ring port = portRing(q);
+    const Vec3 center = port.center;
     const Vec3 normal = faceNormal(q);
-    Vec3 n = glm::normalize(position(q[0]) - position(q[2]));
-    Vec3 b = position(q[1]) - position(q[3]);
-    b = glm::normalize(b - n * glm::dot(b, n));
-    port.frame = RingFrame{glm::cross(n, b), n, b};
-    port.center = center;
     double portRadius = 0.0;
     for (std::uint32_t v : q) portRadius += 0.25 * glm::distance(position(v), center);
     port.tex = 0.0;
@@ -225,27 +216,51 @@ class Builder {
 
     const Vec3 d = poly.startDirection();
     const double rc = poly.radius(0.0);
-    // The first cross section must clear the port by its own size, or its tube grazes the parent.
-    const Vec3 exitDir = start.top ? glm::normalize(normal + d)
-                                   : (glm::dot(d, normal) > 0.2 ? glm::normalize(2.0 * normal + d) : normal);
-    const double e = std::max(2.0 * rc * opt_.limitCompensation, 0.35 * portRadius);
+    // The first cross section must clear the port by its own size, or its tube grazes the parent. It leaves
+    // between the port's normal and the child's direction; where that neck would cut a face of the parent,
+    // straighter and longer necks are tried.
+    const Vec3 preferred = start.top ? glm::normalize(normal + d)
+                                     : (glm::dot(d, normal) > 0.2 ? glm::normalize(2.0 * normal + d) : normal);
+    // A port is as wide as the parent; the neck narrows to at most half of it (a branch collar), so that
+    // its quads stay convex, and the child's own radius is reached at the next cross section.
+    const double exitRadius = std::max(rc, 0.5 * portRadius / opt_.limitCompensation);
+    const double e0 = std::max(2.0 * exitRadius * opt_.limitCompensation, 0.35 * portRadius);
+    const std::array<Vec3, 4> portCorners{position(q[0]), position(q[1]), position(q[2]), position(q[3])};
+    Vec3 exitDir = preferred;
+    double e = e0;
+    for (const Vec3& dir : {preferred, normal}) {
+      bool found = false;
+      for (double scale : {1.0, 1.6, 2.5}) {
+        const Vec3 c = center + dir * (e0 * scale);
+        const auto offsets = ringOffsets(transportFrame(port.frame, glm::normalize(dir + d)), exitRadius * opt_.limitCompensation);
+        const std::array<Vec3, 4> corners{c + offsets[0], c + offsets[1], c + offsets[2], c + offsets[3]};
+        if (!bandCrossesParent(start, portCorners, corners)) {
+          exitDir = dir;
+          e = e0 * scale;
+          found = true;
+          break;
+        }
+      }
+      if (found) break;
+    }
     const Vec3 exitCenter = center + exitDir * e;
     for (int k = 0; k < 4; ++k) addUvw(q[static_cast<std::size_t>(k)], k, port.tex);  // child-then-parent averaging
 
     const RingFrame exitFrame = transportFrame(port.frame, glm::normalize(exitDir + d));
-    const Ring exit = emitRing(stem, exitCenter, exitFrame, rc, port.tex + texAdvance(e, rc));
-    band(port, exit);
     sLo = poly.firstBeyond(start.branchPoint, glm::distance(exitCenter, start.branchPoint) + 0.5 * rc);
     if (!start.top) {
       // A child at a small angle runs along its parent; its tube begins where its skeleton has left the parent.
       const double clearance = start.parentReach + rc * opt_.limitCompensation;
       sLo = std::max(sLo, poly.firstClearOf(start.branchPoint, start.parentAxis, clearance));
     }
-    // The band from the first cross section to the next must not cut any face of the parent: move the next
-    // cross section along the skeleton until it does not.
-    sLo = clearOfParent(poly, start, exitFrame, exit, sLo, 0.25 * std::max(portRadius, rc));
+    const auto offsets = ringOffsets(exitFrame, exitRadius * opt_.limitCompensation);
+    const std::array<Vec3, 4> exitCorners{exitCenter + offsets[0], exitCenter + offsets[1], exitCenter + offsets[2],
+                                          exitCenter + offsets[3]};
+    sLo = clearOfParent(poly, start, exitFrame, exitCorners, sLo, 0.25 * std::max(portRadius, rc));
+    const Ring exit = emitRing(stem, exitCenter, exitFrame, exitRadius, port.tex + texAdvance(e, exitRadius));
+    band(port, exit);
     // The neck from the port widens towards the parent: grandchildren connect beyond its width.
-    slabStart = std::min(sLo + portRadius, poly.length());
+    slabStart = std::min(sLo + 2.0 * portRadius, poly.length());
     return exit;
   }
 
@@ -257,41 +272,50 @@ class Builder {
     return {c + offsets[0], c + offsets[1], c + offsets[2], c + offsets[3]};
   }
 
-  // Bounding boxes of the parent's faces, kept while its children are fitted.
-  const std::vector<Box>& parentBoxes(std::size_t begin, std::size_t end) {
-    if (boxesBegin_ != begin || boxesEnd_ != end) {
-      boxes_.clear();
+  // A grid over the parent's faces, kept while its children are fitted.
+  FaceGrid& parentGrid(std::size_t begin, std::size_t end) {
+    if (gridBegin_ != begin || gridEnd_ != end) {
+      std::vector<Box> boxes;
+      boxes.reserve(end - begin);
       for (std::size_t f = begin; f < end; ++f) {
         const auto& q = out_.mesh.quads[f];
-        boxes_.push_back(boxOf(std::array<Vec3, 4>{position(q[0]), position(q[1]), position(q[2]), position(q[3])}));
+        boxes.push_back(boxOf(std::array<Vec3, 4>{position(q[0]), position(q[1]), position(q[2]), position(q[3])}));
       }
-      boxesBegin_ = begin;
-      boxesEnd_ = end;
+      grid_.build(std::move(boxes));
+      gridBegin_ = begin;
+      gridEnd_ = end;
     }
-    return boxes_;
+    return grid_;
   }
 
-  double clearOfParent(const StemPolyline& poly, const PortStart& start, const RingFrame& exitFrame, const Ring& exit,
-                       double s, double step) {
-    if (start.parentFacesEnd <= start.parentFacesBegin) return s;
-    const auto& boxes = parentBoxes(start.parentFacesBegin, start.parentFacesEnd);
-    std::array<Vec3, 4> exitCorners;
-    for (int k = 0; k < 4; ++k) exitCorners[static_cast<std::size_t>(k)] = position(exit.v[static_cast<std::size_t>(k)]);
-    for (; s < poly.length(); s += step) {
-      const auto next = ringCorners(poly, exitFrame, s);
-      const Box band = boxOf(std::array<Vec3, 8>{exitCorners[0], exitCorners[1], exitCorners[2], exitCorners[3],
-                                                 next[0], next[1], next[2], next[3]});
-      bool clear = true;
-      for (std::size_t f = 0; f < boxes.size() && clear; ++f) {
-        if (!band.overlaps(boxes[f])) continue;
-        const auto& q = out_.mesh.quads[start.parentFacesBegin + f];
-        const std::array<Vec3, 4> face{position(q[0]), position(q[1]), position(q[2]), position(q[3])};
-        for (int k = 0; k < 4 && clear; ++k) {
-          const auto i = static_cast<std::size_t>(k), j = static_cast<std::size_t>((k + 1) % 4);
-          clear = !quadsIntersect(std::array<Vec3, 4>{exitCorners[i], exitCorners[j], next[j], next[i]}, face);
-        }
+  // Whether the band of four quads between two cross sections (corners in ring order) cuts a parent face.
+  bool bandCrossesParent(const PortStart& start, const std::array<Vec3, 4>& a, const std::array<Vec3, 4>& b) {
+    if (start.parentFacesEnd <= start.parentFacesBegin) return false;
+    FaceGrid& grid = parentGrid(start.parentFacesBegin, start.parentFacesEnd);
+    const Box band = boxOf(std::array<Vec3, 8>{a[0], a[1], a[2], a[3], b[0], b[1], b[2], b[3]});
+    for (std::uint32_t f : grid.candidates(band)) {
+      const auto& q = out_.mesh.quads[start.parentFacesBegin + f];
+      const std::array<Vec3, 4> face{position(q[0]), position(q[1]), position(q[2]), position(q[3])};
+      const Box& faceBox = grid.box(f);
+      for (int k = 0; k < 4; ++k) {
+        const auto i = static_cast<std::size_t>(k), j = static_cast<std::size_t>((k + 1) % 4);
+        const std::array<Vec3, 4> side{a[i], a[j], b[j], b[i]};
+        if (!boxOf(side).overlaps(faceBox)) continue;
+        // A side that shares a corner with the face touches it there by construction.
+        bool shares = false;
+        for (std::uint32_t v : q) shares = shares || position(v) == a[i] || position(v) == a[j];
+        if (!shares && quadsIntersect(side, face)) return true;
       }
-      if (clear) return s;
+    }
+    return false;
+  }
+
+  // The band from the first cross section to the next must not cut any face of the parent: the next cross
+  // section moves along the skeleton until it does not.
+  double clearOfParent(const StemPolyline& poly, const PortStart& start, const RingFrame& exitFrame,
+                       const std::array<Vec3, 4>& exitCorners, double s, double step) {
+    for (; s < poly.length(); s += step) {
+      if (!bandCrossesParent(start, exitCorners, ringCorners(poly, exitFrame, s))) return s;
     }
     return poly.length();
   }
@@ -303,7 +327,7 @@ class Builder {
     std::vector<int> children;
   };
 
-  void continueStem(int stem, const StemPolyline& poly, Ring last, double sLo, double slabStart) {
+  void continueStem(int stem, const StemPolyline& poly, Ring last, double sLo, double slabStart, const PortStart* start) {
     const SkeletonStem& st = sk_.stems[static_cast<std::size_t>(stem)];
     const int lastNode = st.firstNode + st.nodeCount - 1;
     const bool split = sk_.nodes[static_cast<std::size_t>(lastNode)].kind == NodeKind::Split &&
@@ -347,7 +371,7 @@ class Builder {
     }
 
     // Forward pass: every ring at least a quarter radius after the previous one (the stem may lengthen).
-    auto gap = [&](double s) { return std::max(0.25 * poly.radius(std::min(s, sEnd)), 1e-6 * sk_.treeScale); };
+    auto gap = [&](double s) { return std::max(0.5 * poly.radius(std::min(s, sEnd)), 1e-6 * sk_.treeScale); };
     double cursor = std::max(sLo, slabStart - gap(slabStart));
     for (std::size_t j = 0; j < slabs.size(); ++j) {
       Slab& slab = slabs[j];
@@ -397,6 +421,8 @@ class Builder {
     } else {
       const double after = stations.empty() ? sLo : stations.back().first;
       endS = std::max(sEnd, after + gap(after));
+      // A child right at the tip would run into the cap: the tip stays three radii past the last slab.
+      if (!slabs.empty()) endS = std::max(endS, slabs.back().hi + 3.0 * poly.radius(std::min(slabs.back().hi, sEnd)));
     }
     while (!stations.empty() && stations.back().first > endS - gap(endS) * 0.5) {
       if (stations.back().second == -2) stations.pop_back();
@@ -404,6 +430,15 @@ class Builder {
     }
     stations.emplace_back(endS, split ? -3 : -4);
 
+    // leavePort cleared the band from the first cross section to arc length sLo; where the first station
+    // lies further on and its band would cut the parent, a cross section at sLo comes first.
+    if (start && sLo < stations.front().first) {
+      std::array<Vec3, 4> exitCorners;
+      for (int k = 0; k < 4; ++k) exitCorners[static_cast<std::size_t>(k)] = position(last.v[static_cast<std::size_t>(k)]);
+      if (bandCrossesParent(*start, exitCorners, ringCorners(poly, last.frame, stations.front().first))) {
+        last = advance(stem, poly, last, sLo);
+      }
+    }
     double previousS = sLo;
     for (const auto& [s, role] : stations) {
       // Extra cross sections where the spacing limits ask for them (never inside a slab).
@@ -581,13 +616,7 @@ class Builder {
     const Vec3 n = faceNormal(q);
     double rho = 0.0;
     for (std::uint32_t v : q) rho += 0.25 * glm::distance(position(v), center);
-    Ring port;
-    port.v = q;
-    Vec3 fn = glm::normalize(position(q[0]) - position(q[2]));
-    Vec3 fb = position(q[1]) - position(q[3]);
-    fb = glm::normalize(fb - fn * glm::dot(fb, fn));
-    port.frame = RingFrame{glm::cross(fn, fb), fn, fb};
-    port.center = center;
+    Ring port = portRing(q);
     for (std::uint32_t v : q) port.tex += 0.25 * uvwSum_[v].y / std::max(1, uvwCount_[v]);
     const RingFrame frame = transportFrame(port.frame, n);
     const double r = 0.8 * rho / opt_.limitCompensation;

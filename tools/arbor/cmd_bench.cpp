@@ -7,6 +7,8 @@
 #include "assets.hpp"
 #include "commands.hpp"
 #include "growth/weber_penn.hpp"
+#include "mesh/tree_mesh.hpp"
+#include "patches/patch_set.hpp"
 
 namespace arbor::cli {
 
@@ -43,6 +45,49 @@ int runBenchGenerate(const BenchOptions& o) {
   return 0;
 }
 
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v[v.size() / 2];
+}
+
+int runBenchMesh(const BenchOptions& o) {
+  const std::vector<std::string> names = o.species.empty() ? presetNames() : o.species;
+  std::printf("%-22s %6s %9s %9s %8s %11s %9s %10s %10s\n", "species", "levels", "quads", "patches", "regular",
+              "skeleton ms", "mesh ms", "patches ms", "total ms");
+  for (const std::string& name : names) {
+    const SpeciesParams params = loadSpeciesArgument(name);
+    GrowthOptions growth;
+    growth.seed = o.seed;
+    growth.levels = o.levels;
+    std::vector<double> skeletonMs, meshMs, patchMs, totalMs;
+    std::size_t quads = 0, patches = 0, regular = 0;
+    int levels = 0;
+    using Clock = std::chrono::steady_clock;
+    auto ms = [](Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double, std::milli>(b - a).count(); };
+    for (int r = 0; r < o.repeat; ++r) {
+      const auto t0 = Clock::now();
+      const Skeleton skeleton = generateSkeleton(params, growth);
+      const auto t1 = Clock::now();
+      const TreeMesh tree = buildTreeMesh(skeleton);
+      const auto t2 = Clock::now();
+      const PatchSet set = buildPatches(tree.mesh);
+      const auto t3 = Clock::now();
+      skeletonMs.push_back(ms(t0, t1));
+      meshMs.push_back(ms(t1, t2));
+      patchMs.push_back(ms(t2, t3));
+      totalMs.push_back(ms(t0, t3));
+      quads = tree.mesh.quads.size();
+      patches = set.size();
+      regular = static_cast<std::size_t>(std::count(set.kind.begin(), set.kind.end(), PatchKind::Regular));
+      levels = skeleton.levels;
+    }
+    std::printf("%-22s %6d %9zu %9zu %8zu %11.1f %9.1f %10.1f %10.1f\n", name.c_str(), levels, quads, patches, regular,
+                median(skeletonMs), median(meshMs), median(patchMs), median(totalMs));
+    std::fflush(stdout);
+  }
+  return 0;
+}
+
 }  // namespace
 
 void addBenchCommand(CLI::App& app, Action& action) {
@@ -57,6 +102,14 @@ void addBenchCommand(CLI::App& app, Action& action) {
   gen->add_option("--seed", o->seed, "Random seed")->capture_default_str();
   gen->add_option("--levels", o->levels, "Stem levels (default: each species' Levels)")->check(CLI::Range(1, 8));
   gen->callback([o, &action] { action = [o] { return runBenchGenerate(*o); }; });
+
+  auto m = std::make_shared<BenchOptions>();
+  CLI::App* mesh = bench->add_subcommand("mesh", "Time parameters -> skeleton -> mesh -> patches per preset (one thread).");
+  mesh->add_option("species", m->species, "Presets or species files (default: every preset)");
+  mesh->add_option("--repeat", m->repeat, "Runs per species; medians are printed")->check(CLI::Range(1, 1000))->capture_default_str();
+  mesh->add_option("--seed", m->seed, "Random seed")->capture_default_str();
+  mesh->add_option("--levels", m->levels, "Stem levels (default: each species' Levels)")->check(CLI::Range(1, 8));
+  mesh->callback([m, &action] { action = [m] { return runBenchMesh(*m); }; });
 }
 
 }  // namespace arbor::cli

@@ -10,6 +10,12 @@
 #include "growth/skeleton_checks.hpp"
 #include "growth/skeleton_json.hpp"
 #include "growth/weber_penn.hpp"
+#include "export/gltf_export.hpp"
+#include "export/obj_export.hpp"
+#include "export/subdivide.hpp"
+#include "mesh/mesh_checks.hpp"
+#include "mesh/tree_mesh.hpp"
+#include "patches/patch_set.hpp"
 
 namespace arbor::cli {
 
@@ -21,7 +27,20 @@ struct GenerateOptions {
   int levels = 0;
   std::string out;
   bool quiet = false;
+  MeshOptions mesh;
+  bool triangles = false;
+  int subdivide = 0;
 };
+
+enum class OutputType { Skeleton, Obj, Gltf, Glb };
+
+OutputType outputType(const std::string& path) {
+  if (endsWith(path, ".json")) return OutputType::Skeleton;
+  if (endsWith(path, ".obj")) return OutputType::Obj;
+  if (endsWith(path, ".gltf")) return OutputType::Gltf;
+  if (endsWith(path, ".glb")) return OutputType::Glb;
+  throw SpeciesError(path, "--out", "unsupported output type; allowed: .json (skeleton), .obj, .gltf, .glb (mesh)");
+}
 
 void printNotes(const std::string& species, const ImportNotes& notes) {
   if (!notes.defaulted.empty()) {
@@ -38,8 +57,9 @@ void printNotes(const std::string& species, const ImportNotes& notes) {
 }
 
 int runGenerate(const GenerateOptions& o) {
-  if (!endsWith(o.out, ".json")) {
-    throw SpeciesError(o.out, "--out", "unsupported output type; allowed: .json (skeleton)");
+  const OutputType type = outputType(o.out);
+  if (type == OutputType::Skeleton && (o.subdivide > 0 || o.triangles)) {
+    throw SpeciesError(o.out, "--out", "--subdivide and --triangles apply to meshes (.obj, .gltf, .glb), not to a skeleton");
   }
   ImportNotes notes;
   const SpeciesParams params = loadSpeciesArgument(o.species, &notes);
@@ -48,11 +68,27 @@ int runGenerate(const GenerateOptions& o) {
   GrowthOptions growth;
   growth.seed = o.seed;
   growth.levels = o.levels;
-  const auto start = std::chrono::steady_clock::now();
+  using Clock = std::chrono::steady_clock;
+  auto ms = [](Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double, std::milli>(b - a).count(); };
+  const auto t0 = Clock::now();
   const Skeleton skeleton = generateSkeleton(params, growth);
-  const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  const auto t1 = Clock::now();
 
-  writeFileAtomically(o.out, writeSkeletonJson(skeleton));
+  std::string content;
+  TreeMesh tree;
+  QuadMesh exported;
+  double meshMs = 0.0;
+  if (type != OutputType::Skeleton) {
+    tree = buildTreeMesh(skeleton, o.mesh);
+    meshMs = ms(t1, Clock::now());
+    exported = o.subdivide > 0 ? subdivide(tree.mesh, o.subdivide) : tree.mesh;
+    if (type == OutputType::Obj) content = writeObj(exported, o.triangles);
+    if (type == OutputType::Gltf) content = writeGltf(exported, params.name);
+    if (type == OutputType::Glb) content = writeGlb(exported, params.name);
+  } else {
+    content = writeSkeletonJson(skeleton);
+  }
+  writeFileAtomically(o.out, content);
   if (o.quiet) return 0;
 
   const SkeletonStats stats = skeletonStats(skeleton);
@@ -60,8 +96,8 @@ int runGenerate(const GenerateOptions& o) {
   for (std::size_t i = 0; i < stats.stemsPerLevel.size(); ++i) {
     perLevel += (i ? ", " : "") + std::to_string(stats.stemsPerLevel[i]);
   }
-  std::printf("%s, seed %llu, %d levels: generated in %.1f ms\n", params.name.c_str(),
-              static_cast<unsigned long long>(o.seed), skeleton.levels, ms);
+  std::printf("%s, seed %llu, %d levels: skeleton in %.1f ms\n", params.name.c_str(),
+              static_cast<unsigned long long>(o.seed), skeleton.levels, ms(t0, t1));
   std::printf("  stems per level  %s\n", perLevel.c_str());
   std::printf("  nodes            %zu (%zu branch points)\n", stats.nodes, stats.branchPoints);
   std::printf("  leaves           %zu\n", stats.leaves);
@@ -69,6 +105,26 @@ int runGenerate(const GenerateOptions& o) {
               stats.crownRadius, skeleton.nodes.empty() ? 0.0 : skeleton.nodes.front().radius);
   std::printf("  r^E conservation worst relative error %.1e (E = %.2f)\n", worstConservationError(skeleton),
               skeleton.exponent);
+  if (type != OutputType::Skeleton) {
+    const MeshTopologyReport topology = checkTopology(tree.mesh);
+    const PatchSet patches = buildPatches(tree.mesh);
+    std::size_t regular = 0, fallback = 0;
+    for (PatchKind k : patches.kind) {
+      regular += k == PatchKind::Regular ? 1 : 0;
+      fallback += k == PatchKind::Fallback ? 1 : 0;
+    }
+    std::printf("  mesh             %zu quads, %zu vertices in %.1f ms; %zu joints\n", tree.mesh.quads.size(),
+                tree.mesh.vertexCount(), meshMs, tree.joints.size());
+    std::printf("  topology         %s, %zu piece(s), Euler characteristic %d, valence %d..%d\n",
+                topology.boundaryEdges == 0 && topology.nonManifoldEdges == 0 ? "closed 2-manifold" : "OPEN OR NON-MANIFOLD",
+                topology.components, topology.eulerCharacteristic, topology.minValence, topology.maxValence);
+    std::printf("  patches          %zu regular, %zu extraordinary, %zu fallback\n", regular,
+                patches.size() - regular - fallback, fallback);
+    if (o.subdivide > 0) {
+      std::printf("  exported         %zu quads after %d Catmull-Clark levels (OpenSubdiv, limit positions)\n",
+                  exported.quads.size(), o.subdivide);
+    }
+  }
   std::printf("wrote %s\n", o.out.c_str());
   return 0;
 }
@@ -77,13 +133,30 @@ int runGenerate(const GenerateOptions& o) {
 
 void addGenerateCommand(CLI::App& app, Action& action) {
   auto o = std::make_shared<GenerateOptions>();
-  CLI::App* cmd = app.add_subcommand("generate", "Grow a tree from a preset or species file and write it.");
+  CLI::App* cmd = app.add_subcommand("generate", "Grow a tree from a preset or species file and write its skeleton or mesh.");
   cmd->add_option("species", o->species, "Preset name (see 'arbor species --list') or a .json/.xml species file")
       ->required();
   cmd->add_option("--seed", o->seed, "Random seed; the same seed gives byte-identical output")->capture_default_str();
   cmd->add_option("--levels", o->levels, "Stem levels to grow (default: the species' Levels)")
       ->check(CLI::Range(1, 8));
-  cmd->add_option("--out", o->out, "Output file: .json writes the skeleton (nodes, stems, leaves)")->required();
+  cmd->add_option("--out", o->out,
+                  "Output file: .json writes the skeleton; .obj (quads), .gltf or .glb (triangles, with _RADIUS, "
+                  "_LEVEL and _FLIP attributes) write the mesh")
+      ->required();
+  cmd->add_option("--ring-spacing", o->mesh.ringSpacing,
+                  "Extra cross sections wherever rings are farther apart than this many local radii (0: off)")
+      ->check(CLI::Range(0.0, 1000.0))
+      ->capture_default_str();
+  cmd->add_option("--max-ring-distance", o->mesh.maxRingDistance,
+                  "Extra cross sections wherever rings are farther apart than this many metres (0: off)")
+      ->check(CLI::Range(0.0, 1000.0))
+      ->capture_default_str();
+  cmd->add_option("--mesh-levels", o->mesh.levels, "Mesh only stems of levels below this (0: all)")
+      ->check(CLI::Range(0, 8));
+  cmd->add_flag("--open-base", o->mesh.openBase, "Leave the ring at the trunk base open (closed by default)");
+  cmd->add_flag("--triangles", o->triangles, "Write triangles instead of quads to .obj");
+  cmd->add_option("--subdivide", o->subdivide, "Export the mesh after N Catmull-Clark levels (OpenSubdiv)")
+      ->check(CLI::Range(0, 6));
   cmd->add_flag("--quiet", o->quiet, "Print nothing on success");
   cmd->callback([o, &action] { action = [o] { return runGenerate(*o); }; });
 }

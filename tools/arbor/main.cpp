@@ -1,5 +1,6 @@
 // arbor: one program, one subcommand per job (generate, species, bench; render and view come later).
 #include <cstdio>
+#include <malloc.h>
 #include <iostream>
 
 #include "commands.hpp"
@@ -27,6 +28,10 @@ int runGuarded(const Action& action) {
 
 int main(int argc, char** argv) {
   using namespace arbor::cli;
+  // Trees are rebuilt in place (viewer edits, benchmarks): keep freed blocks for reuse instead of handing
+  // tens of megabytes back to the kernel and faulting them in again on the next tree.
+  mallopt(M_MMAP_THRESHOLD, 1 << 30);
+  mallopt(M_TRIM_THRESHOLD, 1 << 30);
   CLI::App app{"Arbor: Weber-Penn trees as one connected quad mesh, refined by GPU tessellation.", "arbor"};
   app.set_version_flag("--version", std::string("arbor ") + ARBOR_VERSION);
   app.require_subcommand(1);

@@ -1,0 +1,241 @@
+// The tree mesh: one closed, consistently oriented 2-manifold per tree, no branch through its parent at a
+// joint, flip-coordinate texture values, v along branches, limit radius, options.
+#include <catch2/catch.hpp>
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "growth/weber_penn.hpp"
+#include "mesh/cross_section.hpp"
+#include "mesh/mesh_checks.hpp"
+#include "mesh/tree_mesh.hpp"
+#include "patches/limit_reference.hpp"
+#include "test_support.hpp"
+
+using namespace arbor;
+using Catch::Matchers::WithinAbs;
+
+namespace {
+
+Skeleton grow(const SpeciesParams& p, std::uint64_t seed, int levels = 0) {
+  GrowthOptions o;
+  o.seed = seed;
+  o.levels = levels;
+  return generateSkeleton(p, o);
+}
+
+std::vector<int> valences(const QuadMesh& mesh) {
+  std::map<std::pair<std::uint32_t, std::uint32_t>, int> edges;
+  for (const auto& q : mesh.quads)
+    for (int k = 0; k < 4; ++k) edges[std::minmax(q[static_cast<std::size_t>(k)], q[static_cast<std::size_t>((k + 1) % 4)])] = 1;
+  std::vector<int> valence(mesh.vertexCount(), 0);
+  for (const auto& [e, one] : edges) {
+    valence[e.first] += one;
+    valence[e.second] += one;
+  }
+  return valence;
+}
+
+// A straight, untapered trunk with nothing on it: a plain cylinder for limit-radius checks.
+SpeciesParams cylinderSpecies() {
+  SpeciesParams p = test::steadySpecies();
+  p.levels = 1;
+  p.flare = 0;
+  p.stemLevels[0].taper = 0;
+  p.stemLevels[0].curveRes = 8;
+  return p;
+}
+
+}  // namespace
+
+TEST_CASE("every preset meshes to one closed, outward, manifold piece at several seeds and levels", "[mesh]") {
+  for (const std::string& name : test::presetNames()) {
+    const SpeciesParams p = test::loadPreset(name);
+    for (std::uint64_t seed : {1u, 2u}) {
+      for (int levels : {2, p.levels}) {
+        INFO(name << " seed " << seed << " levels " << levels);
+        const TreeMesh tree = buildTreeMesh(grow(p, seed, levels));
+        const MeshTopologyReport r = checkTopology(tree.mesh);
+        CHECK(tree.mesh.quads.size() > 100);
+        CHECK(r.boundaryEdges == 0);
+        CHECK(r.nonManifoldEdges == 0);
+        CHECK(r.misorientedEdges == 0);
+        CHECK(r.nonManifoldVertices == 0);
+        CHECK(r.degenerateFaces == 0);
+        CHECK(r.components == 1);
+        CHECK(r.eulerCharacteristic == 2);  // a closed surface of genus 0: the tree's skeleton has no loops
+        CHECK(r.signedVolume > 0.0);        // faces point outwards
+        CHECK(r.minValence >= 3);
+        CHECK(r.maxValence <= 6);           // corners of at most two ports: every patch stays within 32 points
+      }
+    }
+  }
+}
+
+TEST_CASE("no child's first bands cut through its parent at a joint", "[mesh]") {
+  for (const std::string& name : test::presetNames()) {
+    INFO(name);
+    const TreeMesh tree = buildTreeMesh(grow(test::loadPreset(name), 1));
+    std::map<int, std::uint32_t> firstQuad;
+    std::map<int, std::vector<std::uint32_t>> facesOf;
+    for (std::uint32_t f = 0; f < tree.quadStem.size(); ++f) {
+      firstQuad.emplace(tree.quadStem[f], f);
+      facesOf[tree.quadStem[f]].push_back(f);
+    }
+    std::size_t crossings = 0, tested = 0;
+    for (const MeshJoint& j : tree.joints) {
+      std::vector<std::uint32_t> parent;  // the parent's faces near the joint
+      for (std::uint32_t f : facesOf[j.parentStem]) {
+        for (std::uint32_t v : tree.mesh.quads[f]) {
+          if (glm::distance(glm::dvec3(tree.mesh.positions[v]), j.center) < 4.0 * j.radius) {
+            parent.push_back(f);
+            break;
+          }
+        }
+      }
+      for (int child : j.childStems) {
+        std::vector<std::uint32_t> bands;  // port -> first cross section -> second cross section
+        for (std::uint32_t f = firstQuad.at(child); f < firstQuad.at(child) + 8 && tree.quadStem[f] == child; ++f) bands.push_back(f);
+        crossings += intersectingFacePairs(tree.mesh, parent, bands);
+        ++tested;
+      }
+    }
+    CHECK(tested > 10);
+    // Known limit: a child attached inside its parent's first, stretched band (its slab pushed along)
+    // can graze it; that happens at about 1 joint in 10,000 (docs/mesh.md). Anything more is a regression.
+    CHECK(crossings * 5000 <= tested);
+  }
+}
+
+TEST_CASE("the flip coordinate is 0 at front and back and +-1 at the sides of every unshared corner", "[mesh]") {
+  const TreeMesh tree = buildTreeMesh(grow(test::loadPreset("quaking-aspen"), 3));
+  const std::vector<int> valence = valences(tree.mesh);
+  std::size_t exact = 0, shared = 0;
+  for (const MeshRing& ring : tree.rings) {
+    for (int k = 0; k < 4; ++k) {
+      const std::uint32_t v = ring.vertices[static_cast<std::size_t>(k)];
+      const glm::vec3 uvw = tree.mesh.uvw[v];
+      CHECK(uvw.x >= 0.0f);
+      CHECK(uvw.x <= 1.0f);
+      CHECK(std::fabs(uvw.z) <= 1.0f);
+      if (valence[v] <= 4) {  // not a port corner: nothing averaged into it
+        CHECK(uvw.x == static_cast<float>(kRingU[static_cast<std::size_t>(k)]));
+        CHECK(uvw.z == static_cast<float>(kRingFlip[static_cast<std::size_t>(k)]));
+        ++exact;
+      } else {
+        ++shared;
+      }
+    }
+  }
+  CHECK(exact > 10 * shared / 2);
+  CHECK(shared > 0);
+}
+
+TEST_CASE("texture v grows monotonically along every branch", "[mesh]") {
+  const TreeMesh tree = buildTreeMesh(grow(test::loadPreset("black-tupelo"), 2));
+  std::map<int, double> last;
+  std::size_t steps = 0;
+  for (const MeshRing& ring : tree.rings) {
+    auto it = last.find(ring.stem);
+    if (it != last.end()) {
+      CHECK(ring.v > it->second);
+      ++steps;
+    }
+    last[ring.stem] = ring.v;
+  }
+  CHECK(steps > 1000);
+}
+
+TEST_CASE("the same skeleton gives the same mesh", "[mesh]") {
+  const Skeleton s = grow(test::loadPreset("weeping-willow"), 4, 3);
+  const TreeMesh a = buildTreeMesh(s), b = buildTreeMesh(s);
+  CHECK(a.mesh.positions == b.mesh.positions);
+  CHECK(a.mesh.quads == b.mesh.quads);
+  CHECK(a.mesh.uvw == b.mesh.uvw);
+}
+
+TEST_CASE("the subdivided surface of a branch has the skeleton's radius", "[mesh]") {
+  const Skeleton s = grow(cylinderSpecies(), 1);
+  const double r = s.nodes[0].radius;
+  const TreeMesh tree = buildTreeMesh(s);
+  const LimitSurface limit(tree.mesh);
+  double lo = 1e9, hi = 0;
+  for (std::size_t f = 0; f < tree.mesh.quads.size(); ++f) {
+    const glm::dvec3 c(tree.mesh.positions[tree.mesh.quads[f][0]]);
+    if (c.z < 2.0 || c.z > 7.0) continue;  // away from the capped ends
+    for (double u : {0.0, 0.25, 0.5}) {
+      const glm::dvec3 p = limit.position(static_cast<int>(f), u, 0.5);
+      const double d = std::hypot(p.x, p.y);
+      lo = std::min(lo, d);
+      hi = std::max(hi, d);
+    }
+  }
+  CHECK(lo > 0.97 * r);
+  CHECK(hi < 1.03 * r);
+}
+
+TEST_CASE("an open base leaves exactly the base ring open", "[mesh]") {
+  MeshOptions options;
+  options.openBase = true;
+  const TreeMesh tree = buildTreeMesh(grow(test::loadPreset("palm"), 1), options);
+  const MeshTopologyReport r = checkTopology(tree.mesh);
+  CHECK(tree.mesh.openBoundary.size() == 4);
+  CHECK(r.boundaryEdges == 4);
+  CHECK(r.eulerCharacteristic == 1);
+  CHECK(r.components == 1);
+}
+
+TEST_CASE("mesh levels leave the deeper stems out and the mesh closed", "[mesh]") {
+  MeshOptions options;
+  options.levels = 2;
+  const Skeleton s = grow(test::loadPreset("black-tupelo"), 1);
+  const TreeMesh tree = buildTreeMesh(s, options);
+  for (int stem : tree.quadStem) {
+    if (stem >= 0) CHECK(s.stems[static_cast<std::size_t>(stem)].level < 2);
+  }
+  const MeshTopologyReport r = checkTopology(tree.mesh);
+  CHECK(r.boundaryEdges == 0);
+  CHECK(r.eulerCharacteristic == 2);
+}
+
+TEST_CASE("a distance limit adds cross sections until none are farther apart", "[mesh]") {
+  const Skeleton s = grow(test::loadPreset("quaking-aspen"), 1);
+  MeshOptions options;
+  options.maxRingDistance = 1.0;
+  const TreeMesh plain = buildTreeMesh(s), dense = buildTreeMesh(s, options);
+  CHECK(dense.rings.size() > plain.rings.size());
+  double previous = -1, gap = 0;
+  glm::dvec3 at(0.0);
+  for (const MeshRing& ring : dense.rings) {
+    if (ring.stem != 0) continue;
+    if (previous >= 0) gap = std::max(gap, glm::distance(ring.center, at));
+    at = ring.center;
+    previous = 1;
+  }
+  CHECK(gap <= 1.0 + 1e-9);
+}
+
+TEST_CASE("triangles keep the orientation of their quads", "[mesh]") {
+  for (const std::string& name : test::presetNames()) {
+    INFO(name);
+    const TreeMesh tree = buildTreeMesh(grow(test::loadPreset(name), 1));
+    const auto triangles = triangulate(tree.mesh);
+    REQUIRE(triangles.size() == 2 * tree.mesh.quads.size());
+    auto P = [&](std::uint32_t v) { return glm::dvec3(tree.mesh.positions[v]); };
+    std::size_t folded = 0;
+    for (std::size_t i = 0; i < triangles.size(); i += 2) {
+      const auto& q = tree.mesh.quads[i / 2];
+      for (std::size_t t = i; t < i + 2; ++t)
+        for (std::uint32_t v : triangles[t]) CHECK(std::find(q.begin(), q.end(), v) != q.end());
+      // Each triangle runs the quad's way round: they share one diagonal, walked in opposite directions.
+      const auto& a = triangles[i];
+      const auto& b = triangles[i + 1];
+      const glm::dvec3 na = glm::cross(P(a[1]) - P(a[0]), P(a[2]) - P(a[0]));
+      const glm::dvec3 nb = glm::cross(P(b[1]) - P(b[0]), P(b[2]) - P(b[0]));
+      // A quad folded along its diagonal (its halves facing apart by more than 120 degrees) is counted.
+      folded += glm::dot(na, nb) < -0.5 * glm::length(na) * glm::length(nb) ? 1 : 0;
+    }
+    // A handful at most (fewer than 1 in 5000), where a child's first band turns back along a bent parent.
+    CHECK(folded * 5000 < tree.mesh.quads.size());
+  }
+}
