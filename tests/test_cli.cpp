@@ -111,3 +111,56 @@ TEST_CASE("species converts an Arbaro file to Arbor JSON that reads back", "[cli
   const Result g = run("generate " + out + " --quiet --out " + arbor::test::tempPath("shrub-skeleton.json"));
   CHECK(g.exitCode == 0);
 }
+
+TEST_CASE("generate writes a tree mesh as OBJ that reads back closed", "[cli][mesh]") {
+  const std::string out = arbor::test::tempPath("palm.obj");
+  const Result r = run("generate palm --out " + out);
+  INFO(r.output);
+  REQUIRE(r.exitCode == 0);
+  CHECK_THAT(r.output, Catch::Contains("closed 2-manifold") && Catch::Contains("patches"));
+  const std::string text = arbor::readFile(out);
+  std::size_t faces = 0, vertices = 0;
+  for (std::size_t at = 0; (at = text.find('\n', at)) != std::string::npos; ++at) {
+    faces += text.compare(at + 1, 2, "f ") == 0 ? 1 : 0;
+    vertices += text.compare(at + 1, 2, "v ") == 0 ? 1 : 0;
+  }
+  CHECK(faces > 1000);
+  CHECK(vertices > 1000);
+}
+
+TEST_CASE("a generated tree as glTF and GLB passes the Khronos validator", "[cli][mesh]") {
+  for (const char* extension : {".gltf", ".glb"}) {
+    const std::string out = arbor::test::tempPath(std::string("aspen") + extension);
+    REQUIRE(run("generate quaking-aspen --levels 2 --quiet --out " + out).exitCode == 0);
+    const Result v = [&] {
+      Result r;
+      const std::string command = "node " + std::string(ARBOR_SOURCE_DIR) + "/tools/validate-gltf.mjs " + out + " 2>&1";
+      FILE* pipe = popen(command.c_str(), "r");
+      char buffer[4096];
+      std::size_t n = 0;
+      while ((n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) r.output.append(buffer, n);
+      const int status = pclose(pipe);
+      r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+      return r;
+    }();
+    INFO(v.output);
+    CHECK(v.exitCode == 0);
+    CHECK_THAT(v.output, Catch::Contains("0 errors"));
+  }
+}
+
+TEST_CASE("subdivided export has four times the quads per level", "[cli][mesh]") {
+  const std::string coarse = arbor::test::tempPath("coarse.obj"), fine = arbor::test::tempPath("fine.obj");
+  REQUIRE(run("generate palm --quiet --out " + coarse).exitCode == 0);
+  REQUIRE(run("generate palm --quiet --subdivide 2 --out " + fine).exitCode == 0);
+  auto countFaces = [](const std::string& text) {
+    std::size_t faces = 0;
+    for (std::size_t at = 0; (at = text.find("\nf ", at)) != std::string::npos; ++at) ++faces;
+    return faces;
+  };
+  CHECK(countFaces(arbor::readFile(fine)) == 16 * countFaces(arbor::readFile(coarse)));
+}
+
+TEST_CASE("mesh options that make no sense for a skeleton are refused", "[cli]") {
+  CHECK(run("generate palm --subdivide 1 --out " + arbor::test::tempPath("s.json")).exitCode == 2);
+}
