@@ -1,0 +1,19 @@
+#pragma once
+// Procedural bark: a colour map and a height map that tile in u and v, for the trunk and branch shaders.
+#include <cstdint>
+
+#include "png_io.hpp"
+
+namespace arbor {
+
+struct BarkTextures {
+  Image color;   // brown-grey bark, dark in the fissures; opaque
+  Image height;  // grey (R = G = B), mean about 128; dark = fissure, light = plate top; opaque
+};
+
+// Square maps `size` pixels wide (1..16384; the renderer wants powers of two). The image's vertical axis is
+// v, along the stem: ridges and fissures run mostly vertically. Tiles seamlessly both ways. Deterministic:
+// the same size and seed give the same bytes. Throws std::invalid_argument for a size out of range.
+BarkTextures makeBarkTextures(int size, std::uint32_t seed);
+
+}  // namespace arbor

@@ -1,0 +1,63 @@
+// arbor textures: write the procedural bark maps (colour and height) the renderer samples on stems.
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+
+#include "commands.hpp"
+#include "image/bark_texture.hpp"
+#include "species/species_io.hpp"
+
+namespace arbor::cli {
+
+namespace {
+
+struct TexturesOptions {
+  int size = 512;
+  std::uint32_t seed = 1;
+  std::string out;
+};
+
+constexpr int kMinSize = 64, kMaxSize = 4096;
+
+bool isPowerOfTwo(int n) { return n > 0 && (n & (n - 1)) == 0; }
+
+int runTextures(const TexturesOptions& o) {
+  // Powers of two so the renderer can build a full mip chain; bounded so a typo cannot fill the disk.
+  if (!isPowerOfTwo(o.size) || o.size < kMinSize || o.size > kMaxSize) {
+    throw SpeciesError("arbor textures", "--size",
+                       std::to_string(o.size) + " is not allowed; allowed: a power of two from " +
+                           std::to_string(kMinSize) + " to " + std::to_string(kMaxSize));
+  }
+  namespace fs = std::filesystem;
+  const fs::path dir(o.out);
+  std::error_code error;
+  if (fs::exists(dir, error) && !fs::is_directory(dir, error)) {
+    throw SpeciesError(o.out, "--out", "exists and is not a directory");
+  }
+  fs::create_directories(dir, error);
+  if (error) throw std::runtime_error(o.out + ": cannot create the directory (" + error.message() + ")");
+
+  const auto t0 = std::chrono::steady_clock::now();
+  const BarkTextures maps = makeBarkTextures(o.size, o.seed);
+  const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  const std::string colorPath = (dir / "bark_color.png").string(), heightPath = (dir / "bark_height.png").string();
+  writePng(colorPath, maps.color);
+  writePng(heightPath, maps.height);
+  std::printf("bark %d x %d, seed %u: generated in %.0f ms\nwrote %s\nwrote %s\n", o.size, o.size, o.seed, ms,
+              colorPath.c_str(), heightPath.c_str());
+  return 0;
+}
+
+}  // namespace
+
+void addTexturesCommand(CLI::App& app, Action& action) {
+  auto o = std::make_shared<TexturesOptions>();
+  CLI::App* cmd = app.add_subcommand("textures", "Write the procedural bark textures (colour and height maps, tileable PNG).");
+  cmd->add_option("--size", o->size, "Width and height in pixels: a power of two from 64 to 4096")->capture_default_str();
+  cmd->add_option("--seed", o->seed, "Random seed; the same size and seed give byte-identical files")->capture_default_str();
+  cmd->add_option("--out", o->out, "Directory for bark_color.png and bark_height.png (created if missing)")->required();
+  cmd->callback([o, &action] { action = [o] { return runTextures(*o); }; });
+}
+
+}  // namespace arbor::cli
