@@ -14,6 +14,9 @@ constexpr int kExitBadInput = 2;
 void addGenerateCommand(CLI::App& app, Action& action);
 void addSpeciesCommand(CLI::App& app, Action& action);
 void addBenchCommand(CLI::App& app, Action& action);
+void addRenderCommand(CLI::App& app, Action& action);
+void addTexturesCommand(CLI::App& app, Action& action);
+void addAccuracyCommand(CLI::App& app, Action& action);
 
 // Runs an action, turning the project's exceptions into messages and exit codes.
 int runGuarded(const Action& action);

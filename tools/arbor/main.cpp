@@ -5,6 +5,7 @@
 
 #include "commands.hpp"
 #include "growth/weber_penn.hpp"
+#include "vk/context.hpp"
 #include "species/species_io.hpp"
 
 namespace arbor::cli {
@@ -18,6 +19,9 @@ int runGuarded(const Action& action) {
   } catch (const GenerationError& e) {
     std::fprintf(stderr, "arbor: error: %s\n", e.what());
     return kExitBadInput;
+  } catch (const vk::VulkanError& e) {
+    std::fprintf(stderr, "arbor: Vulkan error: %s\n", e.what());
+    return kExitFailure;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "arbor: error: %s\n", e.what());
     return kExitFailure;
@@ -39,6 +43,9 @@ int main(int argc, char** argv) {
   addGenerateCommand(app, action);
   addSpeciesCommand(app, action);
   addBenchCommand(app, action);
+  addRenderCommand(app, action);
+  addTexturesCommand(app, action);
+  addAccuracyCommand(app, action);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

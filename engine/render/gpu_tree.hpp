@@ -1,0 +1,24 @@
+#pragma once
+// A tree on the GPU: its vertices (also read by the ACC control shader), triangle indices (flat, PN) and
+// patches with their control point indices (ACC).
+#include "camera.hpp"
+#include "mesh/quad_mesh.hpp"
+#include "patches/patch_set.hpp"
+#include "vk/buffer.hpp"
+
+namespace arbor::render {
+
+struct GpuTree {
+  vk::Buffer vertices;   // per vertex: position + radius, normal + level, uvw
+  vk::Buffer indices;    // triangles, three per quad pair
+  vk::Buffer patches;    // per patch: point offset, valences, prefixes, kind
+  vk::Buffer points;     // control point vertex indices
+  std::uint32_t triangles = 0, patchCount = 0;
+  std::uint32_t regular = 0, extraordinary = 0, fallback = 0;
+  std::size_t bytes = 0;  // all buffers together
+  Bounds bounds;
+};
+
+GpuTree uploadTree(const vk::VulkanContext& context, const QuadMesh& mesh, const PatchSet& patches);
+
+}  // namespace arbor::render

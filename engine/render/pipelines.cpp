@@ -1,0 +1,213 @@
+#include "pipelines.hpp"
+
+#include <array>
+#include <vector>
+
+#include "spirv_acc_tesc.h"
+#include "spirv_acc_tese.h"
+#include "spirv_acc_vert.h"
+#include "spirv_flat_vert.h"
+#include "spirv_ground_frag.h"
+#include "spirv_ground_vert.h"
+#include "spirv_pn_tesc.h"
+#include "spirv_pn_tese.h"
+#include "spirv_pn_vert.h"
+#include "spirv_sky_frag.h"
+#include "spirv_sky_vert.h"
+#include "spirv_tree_frag.h"
+
+namespace arbor::render {
+
+const char* renderModeName(RenderMode mode) {
+  switch (mode) {
+    case RenderMode::Flat: return "flat";
+    case RenderMode::PN: return "pn";
+    case RenderMode::ACC: return "acc";
+  }
+  return "acc";
+}
+
+namespace {
+
+struct Stage {
+  VkShaderStageFlagBits stage;
+  const std::uint32_t* code;
+  std::size_t bytes;
+};
+
+template <std::size_t N>
+Stage stage(VkShaderStageFlagBits s, const std::uint32_t (&code)[N]) {
+  return Stage{s, code, sizeof(code)};
+}
+
+struct PipelineSpec {
+  std::vector<Stage> stages;
+  VkPrimitiveTopology topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
+  std::uint32_t patchPoints = 0;   // > 0: tessellated
+  bool treeVertices = false;       // vertex input: the tree's vertex buffer
+  bool depthWrite = true;
+  bool wireframe = false;
+  bool cullBack = true;
+};
+
+VkShaderModule module(VkDevice device, const Stage& s) {
+  VkShaderModuleCreateInfo info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
+  info.codeSize = s.bytes;
+  info.pCode = s.code;
+  VkShaderModule m = VK_NULL_HANDLE;
+  vk::check(vkCreateShaderModule(device, &info, nullptr, &m), "vkCreateShaderModule");
+  return m;
+}
+
+VkPipeline build(VkDevice device, VkRenderPass renderPass, VkPipelineLayout layout, VkSampleCountFlagBits samples,
+                 const PipelineSpec& spec) {
+  std::vector<VkShaderModule> modules;
+  std::vector<VkPipelineShaderStageCreateInfo> stages;
+  for (const Stage& s : spec.stages) {
+    modules.push_back(module(device, s));
+    VkPipelineShaderStageCreateInfo info{VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
+    info.stage = s.stage;
+    info.module = modules.back();
+    info.pName = "main";
+    stages.push_back(info);
+  }
+  // The tree vertex: position + radius, normal + level, uvw (three vec4, 48 bytes).
+  const VkVertexInputBindingDescription binding{0, 48, VK_VERTEX_INPUT_RATE_VERTEX};
+  const std::array<VkVertexInputAttributeDescription, 3> attributes{{{0, 0, VK_FORMAT_R32G32B32A32_SFLOAT, 0},
+                                                                      {1, 0, VK_FORMAT_R32G32B32A32_SFLOAT, 16},
+                                                                      {2, 0, VK_FORMAT_R32G32B32A32_SFLOAT, 32}}};
+  VkPipelineVertexInputStateCreateInfo input{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
+  if (spec.treeVertices) {
+    input.vertexBindingDescriptionCount = 1;
+    input.pVertexBindingDescriptions = &binding;
+    input.vertexAttributeDescriptionCount = static_cast<std::uint32_t>(attributes.size());
+    input.pVertexAttributeDescriptions = attributes.data();
+  }
+  VkPipelineInputAssemblyStateCreateInfo assembly{VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
+  assembly.topology = spec.patchPoints > 0 ? VK_PRIMITIVE_TOPOLOGY_PATCH_LIST : spec.topology;
+  VkPipelineTessellationDomainOriginStateCreateInfo origin{VK_STRUCTURE_TYPE_PIPELINE_TESSELLATION_DOMAIN_ORIGIN_STATE_CREATE_INFO};
+  origin.domainOrigin = VK_TESSELLATION_DOMAIN_ORIGIN_LOWER_LEFT;  // (u, v) as in OpenGL and the thesis
+  VkPipelineTessellationStateCreateInfo tessellation{VK_STRUCTURE_TYPE_PIPELINE_TESSELLATION_STATE_CREATE_INFO};
+  tessellation.pNext = &origin;
+  tessellation.patchControlPoints = spec.patchPoints;
+  VkPipelineViewportStateCreateInfo viewport{VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
+  viewport.viewportCount = 1;
+  viewport.scissorCount = 1;
+  VkPipelineRasterizationStateCreateInfo raster{VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
+  raster.polygonMode = spec.wireframe ? VK_POLYGON_MODE_LINE : VK_POLYGON_MODE_FILL;
+  raster.cullMode = spec.cullBack ? VK_CULL_MODE_BACK_BIT : VK_CULL_MODE_NONE;
+  // Faces are counter-clockwise from outside; the projection's y flip makes them clockwise on screen.
+  raster.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;  // outward CCW faces; the projection flips y, keeping the winding
+  raster.lineWidth = 1.0f;
+  if (spec.wireframe) {
+    raster.depthBiasEnable = VK_TRUE;  // the overlay sits on the surface it outlines
+    raster.depthBiasConstantFactor = -1.0f;
+    raster.depthBiasSlopeFactor = -1.0f;
+  }
+  VkPipelineMultisampleStateCreateInfo multisample{VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
+  multisample.rasterizationSamples = samples;
+  VkPipelineDepthStencilStateCreateInfo depth{VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
+  depth.depthTestEnable = VK_TRUE;
+  depth.depthWriteEnable = spec.depthWrite ? VK_TRUE : VK_FALSE;
+  depth.depthCompareOp = VK_COMPARE_OP_LESS_OR_EQUAL;
+  VkPipelineColorBlendAttachmentState blendAttachment{};
+  blendAttachment.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
+  VkPipelineColorBlendStateCreateInfo blend{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
+  blend.attachmentCount = 1;
+  blend.pAttachments = &blendAttachment;
+  const std::array<VkDynamicState, 2> dynamicStates{VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
+  VkPipelineDynamicStateCreateInfo dynamic{VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO};
+  dynamic.dynamicStateCount = static_cast<std::uint32_t>(dynamicStates.size());
+  dynamic.pDynamicStates = dynamicStates.data();
+
+  VkGraphicsPipelineCreateInfo info{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO};
+  info.stageCount = static_cast<std::uint32_t>(stages.size());
+  info.pStages = stages.data();
+  info.pVertexInputState = &input;
+  info.pInputAssemblyState = &assembly;
+  info.pTessellationState = spec.patchPoints > 0 ? &tessellation : nullptr;
+  info.pViewportState = &viewport;
+  info.pRasterizationState = &raster;
+  info.pMultisampleState = &multisample;
+  info.pDepthStencilState = &depth;
+  info.pColorBlendState = &blend;
+  info.pDynamicState = &dynamic;
+  info.layout = layout;
+  info.renderPass = renderPass;
+  VkPipeline pipeline = VK_NULL_HANDLE;
+  const VkResult result = vkCreateGraphicsPipelines(device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline);
+  for (VkShaderModule m : modules) vkDestroyShaderModule(device, m, nullptr);
+  vk::check(result, "vkCreateGraphicsPipelines");
+  return pipeline;
+}
+
+}  // namespace
+
+void Pipelines::destroy(VkDevice device) {
+  for (VkPipeline p : {sky, ground, tree[0], tree[1], tree[2], wireframe[0], wireframe[1], wireframe[2]}) {
+    if (p) vkDestroyPipeline(device, p, nullptr);
+  }
+  if (layout) vkDestroyPipelineLayout(device, layout, nullptr);
+  if (setLayout) vkDestroyDescriptorSetLayout(device, setLayout, nullptr);
+  *this = Pipelines{};
+}
+
+Pipelines createPipelines(const vk::VulkanContext& context, VkRenderPass renderPass, VkSampleCountFlagBits samples) {
+  const VkDevice device = context.device();
+  Pipelines p;
+  const VkShaderStageFlags all = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT |
+                                 VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
+  const VkShaderStageFlags tess = VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT | VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT;
+  const std::array<VkDescriptorSetLayoutBinding, 8> bindings{{
+      {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, all, nullptr},
+      {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, all, nullptr},
+      {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, tess, nullptr},
+      {3, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, tess, nullptr},
+      {4, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, all, nullptr},
+      {5, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, all, nullptr},
+      {6, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, nullptr},
+      {7, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, nullptr},
+  }};
+  VkDescriptorSetLayoutCreateInfo setInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+  setInfo.bindingCount = static_cast<std::uint32_t>(bindings.size());
+  setInfo.pBindings = bindings.data();
+  vk::check(vkCreateDescriptorSetLayout(device, &setInfo, nullptr, &p.setLayout), "vkCreateDescriptorSetLayout");
+  const VkPushConstantRange push{all, 0, sizeof(DrawConstants)};
+  VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+  layoutInfo.setLayoutCount = 1;
+  layoutInfo.pSetLayouts = &p.setLayout;
+  layoutInfo.pushConstantRangeCount = 1;
+  layoutInfo.pPushConstantRanges = &push;
+  vk::check(vkCreatePipelineLayout(device, &layoutInfo, nullptr, &p.layout), "vkCreatePipelineLayout");
+
+  PipelineSpec sky{{stage(VK_SHADER_STAGE_VERTEX_BIT, spirv_sky_vert), stage(VK_SHADER_STAGE_FRAGMENT_BIT, spirv_sky_frag)}};
+  sky.depthWrite = false;
+  sky.cullBack = false;
+  p.sky = build(device, renderPass, p.layout, samples, sky);
+  PipelineSpec ground{{stage(VK_SHADER_STAGE_VERTEX_BIT, spirv_ground_vert), stage(VK_SHADER_STAGE_FRAGMENT_BIT, spirv_ground_frag)}};
+  ground.cullBack = false;
+  p.ground = build(device, renderPass, p.layout, samples, ground);
+
+  const auto treeFrag = stage(VK_SHADER_STAGE_FRAGMENT_BIT, spirv_tree_frag);
+  PipelineSpec flat{{stage(VK_SHADER_STAGE_VERTEX_BIT, spirv_flat_vert), treeFrag}};
+  flat.treeVertices = true;
+  PipelineSpec pn{{stage(VK_SHADER_STAGE_VERTEX_BIT, spirv_pn_vert), stage(VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, spirv_pn_tesc),
+                   stage(VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, spirv_pn_tese), treeFrag}};
+  pn.patchPoints = 3;  // the vertex stage fetches its triangle's corners from the index buffer
+  PipelineSpec acc{{stage(VK_SHADER_STAGE_VERTEX_BIT, spirv_acc_vert), stage(VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, spirv_acc_tesc),
+                    stage(VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, spirv_acc_tese), treeFrag}};
+  acc.patchPoints = 4;  // the quad's corners; the 1-ring comes from the points buffer
+  const PipelineSpec* specs[3] = {&flat, &pn, &acc};
+  for (int m = 0; m < 3; ++m) {
+    p.tree[m] = build(device, renderPass, p.layout, samples, *specs[m]);
+    if (context.features().fillModeNonSolid) {
+      PipelineSpec wire = *specs[m];
+      wire.wireframe = true;
+      wire.cullBack = false;
+      p.wireframe[m] = build(device, renderPass, p.layout, samples, wire);
+    }
+  }
+  return p;
+}
+
+}  // namespace arbor::render

@@ -1,0 +1,30 @@
+#pragma once
+// The graphics pipelines: sky, ground, and the tree in three modes (flat, PN-triangles, ACC), each also as
+// wireframe; one descriptor set layout and pipeline layout shared by all.
+#include "vk/context.hpp"
+
+namespace arbor::render {
+
+enum class RenderMode { Flat, PN, ACC };
+const char* renderModeName(RenderMode mode);
+
+struct Pipelines {
+  VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;
+  VkPipelineLayout layout = VK_NULL_HANDLE;
+  VkPipeline sky = VK_NULL_HANDLE, ground = VK_NULL_HANDLE;
+  VkPipeline tree[3] = {};       // by RenderMode
+  VkPipeline wireframe[3] = {};  // null where the device has no fillModeNonSolid
+
+  void destroy(VkDevice device);
+};
+
+// Push constants: the tree's model matrix and the first patch of the draw.
+struct DrawConstants {
+  float model[16];
+  std::uint32_t patchBase;
+  std::uint32_t pad[3];
+};
+
+Pipelines createPipelines(const vk::VulkanContext& context, VkRenderPass renderPass, VkSampleCountFlagBits samples);
+
+}  // namespace arbor::render

@@ -1,0 +1,47 @@
+#include "render_session.hpp"
+
+#include <chrono>
+
+namespace arbor::render {
+
+RenderSession::RenderSession(const vk::VulkanContext& context, std::uint32_t width, std::uint32_t height,
+                             VkSampleCountFlagBits samples, const Image& barkColor, const Image& barkHeight)
+    : context_(context),
+      target_(context, width, height, samples),
+      renderer_(context, target_.renderPass(), samples, barkColor, barkHeight) {}
+
+void RenderSession::setTree(const QuadMesh& mesh, const PatchSet& patches) {
+  renderer_.setTree(nullptr);
+  tree_ = std::make_unique<GpuTree>(uploadTree(context_, mesh, patches));
+  renderer_.setTree(tree_.get());
+}
+
+FrameResult RenderSession::render(const Camera& camera, const RenderSettings& settings) {
+  const auto start = std::chrono::steady_clock::now();
+  context_.submitAndWait([&](VkCommandBuffer cmd) {
+    renderer_.beginFrame(cmd, camera, target_.extent(), settings);
+    std::array<VkClearValue, 3> clear{};
+    clear[0].color = {{0.0f, 0.0f, 0.0f, 1.0f}};
+    clear[1].depthStencil = {1.0f, 0};
+    VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
+    begin.renderPass = target_.renderPass();
+    begin.framebuffer = target_.framebuffer();
+    begin.renderArea = {{0, 0}, target_.extent()};
+    begin.clearValueCount = static_cast<std::uint32_t>(clear.size());
+    begin.pClearValues = clear.data();
+    vkCmdBeginRenderPass(cmd, &begin, VK_SUBPASS_CONTENTS_INLINE);
+    renderer_.draw(cmd, target_.extent(), settings);
+    vkCmdEndRenderPass(cmd);
+    target_.recordReadback(cmd);
+  });
+  FrameResult result;
+  result.cpuMilliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  result.gpu = renderer_.stats();
+  return result;
+}
+
+BarkImages loadBarkImages(const std::string& assetDirectory) {
+  return BarkImages{readPng(assetDirectory + "/textures/bark_color.png"), readPng(assetDirectory + "/textures/bark_height.png")};
+}
+
+}  // namespace arbor::render

@@ -1,0 +1,41 @@
+#pragma once
+// Everything an offscreen render needs, kept together so that tests and benchmarks render many frames
+// without rebuilding the context: target, renderer, the uploaded tree.
+#include <memory>
+
+#include "offscreen.hpp"
+#include "renderer.hpp"
+
+namespace arbor::render {
+
+struct FrameResult {
+  FrameStats gpu;
+  double cpuMilliseconds = 0.0;  // record + submit + wait, on the host
+};
+
+class RenderSession {
+ public:
+  RenderSession(const vk::VulkanContext& context, std::uint32_t width, std::uint32_t height, VkSampleCountFlagBits samples,
+                const Image& barkColor, const Image& barkHeight);
+
+  void setTree(const QuadMesh& mesh, const PatchSet& patches);
+  const GpuTree* tree() const { return tree_.get(); }
+  FrameResult render(const Camera& camera, const RenderSettings& settings);
+  Image image() const { return target_.readback(); }
+  TreeRenderer& renderer() { return renderer_; }
+  VkExtent2D extent() const { return target_.extent(); }
+
+ private:
+  const vk::VulkanContext& context_;
+  OffscreenTarget target_;
+  TreeRenderer renderer_;
+  std::unique_ptr<GpuTree> tree_;
+};
+
+// The project's bark textures from assets/textures (made by `arbor textures`).
+struct BarkImages {
+  Image color, height;
+};
+BarkImages loadBarkImages(const std::string& assetDirectory);
+
+}  // namespace arbor::render

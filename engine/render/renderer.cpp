@@ -1,0 +1,259 @@
+#include "renderer.hpp"
+
+#include <algorithm>
+#include <cstring>
+
+#include <glm/gtc/type_ptr.hpp>
+
+namespace arbor::render {
+
+namespace {
+
+// std140 image of shaders/scene.glsl's Scene block.
+struct SceneUniforms {
+  glm::mat4 viewProj;
+  glm::mat4 view;
+  glm::mat4 inverseViewProj;
+  glm::vec4 cameraPos;
+  glm::vec4 lightDir;
+  glm::vec4 viewport;
+  glm::vec4 tess;
+  glm::vec4 displace;
+  glm::vec4 skyTop;
+  glm::vec4 skyHorizon;
+  glm::vec4 ground;
+  glm::uvec4 flags;
+};
+
+constexpr std::uint32_t kCaptureHeader = 16;  // count, capacity, two words of padding
+constexpr std::uint32_t kTimestampCount = 2;
+constexpr std::uint32_t kLavapipeInputVerticesPerDraw = 4096;  // beyond it lavapipe garbles patches
+
+// Tessellated vertices one patch can emit at `level` with equal spacing.
+std::uint32_t verticesPerPatch(RenderMode mode, float level) {
+  const auto l = static_cast<std::uint32_t>(std::clamp(level, 1.0f, 64.0f));
+  return mode == RenderMode::ACC ? (l + 1) * (l + 1) : (l + 1) * (l + 2) / 2;
+}
+
+}  // namespace
+
+TreeRenderer::TreeRenderer(const vk::VulkanContext& context, VkRenderPass renderPass, VkSampleCountFlagBits samples,
+                           const Image& barkColor, const Image& barkHeight)
+    : context_(context) {
+  pipelines_ = createPipelines(context, renderPass, samples);
+  barkColor_ = vk::uploadTexture(context, barkColor.rgba, static_cast<std::uint32_t>(barkColor.width),
+                                 static_cast<std::uint32_t>(barkColor.height), true);
+  barkHeight_ = vk::uploadTexture(context, barkHeight.rgba, static_cast<std::uint32_t>(barkHeight.width),
+                                  static_cast<std::uint32_t>(barkHeight.height), false);
+  sampler_ = vk::createRepeatSampler(context, static_cast<float>(barkColor_.mipLevels()));
+  scene_ = vk::hostBuffer(context, sizeof(SceneUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+  setCapture(0);
+
+  const VkDevice device = context.device();
+  const std::array<VkDescriptorPoolSize, 3> sizes{{{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1},
+                                                   {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 5},
+                                                   {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 2}}};
+  VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+  poolInfo.maxSets = 1;
+  poolInfo.poolSizeCount = static_cast<std::uint32_t>(sizes.size());
+  poolInfo.pPoolSizes = sizes.data();
+  vk::check(vkCreateDescriptorPool(device, &poolInfo, nullptr, &pool_), "vkCreateDescriptorPool");
+  VkDescriptorSetAllocateInfo alloc{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+  alloc.descriptorPool = pool_;
+  alloc.descriptorSetCount = 1;
+  alloc.pSetLayouts = &pipelines_.setLayout;
+  vk::check(vkAllocateDescriptorSets(device, &alloc, &set_), "vkAllocateDescriptorSets");
+  setTree(nullptr);
+
+  if (context.features().pipelineStatisticsQuery) {
+    VkQueryPoolCreateInfo q{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
+    q.queryType = VK_QUERY_TYPE_PIPELINE_STATISTICS;
+    q.queryCount = 1;
+    q.pipelineStatistics = VK_QUERY_PIPELINE_STATISTIC_CLIPPING_PRIMITIVES_BIT;
+    vk::check(vkCreateQueryPool(device, &q, nullptr, &statistics_), "vkCreateQueryPool");
+  }
+  if (context.properties().limits.timestampComputeAndGraphics) {
+    VkQueryPoolCreateInfo q{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
+    q.queryType = VK_QUERY_TYPE_TIMESTAMP;
+    q.queryCount = kTimestampCount;
+    vk::check(vkCreateQueryPool(device, &q, nullptr, &timestamps_), "vkCreateQueryPool");
+  }
+}
+
+TreeRenderer::~TreeRenderer() {
+  const VkDevice device = context_.device();
+  vkDeviceWaitIdle(device);
+  if (statistics_) vkDestroyQueryPool(device, statistics_, nullptr);
+  if (timestamps_) vkDestroyQueryPool(device, timestamps_, nullptr);
+  vkDestroyDescriptorPool(device, pool_, nullptr);
+  vkDestroySampler(device, sampler_, nullptr);
+  pipelines_.destroy(device);
+}
+
+void TreeRenderer::setCapture(std::uint32_t capacity) {
+  captureCapacity_ = capacity;
+  capture_ = vk::hostBuffer(context_, kCaptureHeader + static_cast<std::size_t>(std::max(capacity, 1u)) * 32,
+                            VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+  std::memset(capture_.mapped(), 0, kCaptureHeader);
+  static_cast<std::uint32_t*>(capture_.mapped())[1] = capacity;
+  if (set_) setTree(tree_);
+}
+
+std::vector<CapturedPoint> TreeRenderer::captured() const {
+  const auto* header = static_cast<const std::uint32_t*>(capture_.mapped());
+  const std::uint32_t count = std::min(header[0], captureCapacity_);
+  const auto* entries = reinterpret_cast<const float*>(static_cast<const std::uint8_t*>(capture_.mapped()) + kCaptureHeader);
+  std::vector<CapturedPoint> points(count);
+  for (std::uint32_t i = 0; i < count; ++i) {
+    const float* e = entries + 8 * i;
+    points[i] = CapturedPoint{static_cast<std::uint32_t>(e[0]), e[1], e[2], glm::vec3(e[4], e[5], e[6])};
+  }
+  return points;
+}
+
+void TreeRenderer::setTree(const GpuTree* tree) {
+  tree_ = tree;
+  // Without a tree the storage bindings still point at a valid buffer: every binding is always written.
+  const VkBuffer fallback = capture_.handle();
+  const VkDescriptorBufferInfo sceneInfo{scene_.handle(), 0, VK_WHOLE_SIZE};
+  const VkDescriptorBufferInfo vertexInfo{tree ? tree->vertices.handle() : fallback, 0, VK_WHOLE_SIZE};
+  const VkDescriptorBufferInfo patchInfo{tree ? tree->patches.handle() : fallback, 0, VK_WHOLE_SIZE};
+  const VkDescriptorBufferInfo pointInfo{tree ? tree->points.handle() : fallback, 0, VK_WHOLE_SIZE};
+  const VkDescriptorBufferInfo indexInfo{tree ? tree->indices.handle() : fallback, 0, VK_WHOLE_SIZE};
+  const VkDescriptorBufferInfo captureInfo{capture_.handle(), 0, VK_WHOLE_SIZE};
+  const VkDescriptorImageInfo colorInfo{sampler_, barkColor_.view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+  const VkDescriptorImageInfo heightInfo{sampler_, barkHeight_.view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+  auto write = [&](std::uint32_t binding, VkDescriptorType type, const VkDescriptorBufferInfo* b, const VkDescriptorImageInfo* i) {
+    VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+    w.dstSet = set_;
+    w.dstBinding = binding;
+    w.descriptorCount = 1;
+    w.descriptorType = type;
+    w.pBufferInfo = b;
+    w.pImageInfo = i;
+    return w;
+  };
+  const std::array<VkWriteDescriptorSet, 8> writes{
+      write(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, &sceneInfo, nullptr),
+      write(1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &vertexInfo, nullptr),
+      write(2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &patchInfo, nullptr),
+      write(3, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &pointInfo, nullptr),
+      write(4, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, nullptr, &colorInfo),
+      write(5, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, nullptr, &heightInfo),
+      write(6, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &captureInfo, nullptr),
+      write(7, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &indexInfo, nullptr)};
+  vkUpdateDescriptorSets(context_.device(), static_cast<std::uint32_t>(writes.size()), writes.data(), 0, nullptr);
+}
+
+std::uint32_t TreeRenderer::primitivesPerDraw(const RenderSettings& settings) const {
+  if (settings.patchesPerDraw > 0) return settings.patchesPerDraw;
+  if (settings.mode == RenderMode::Flat || !context_.isLavapipe()) return 1u << 30;
+  const float level = settings.adaptivePixels > 0.0f ? settings.maxLevel : settings.tessLevel;
+  // Two lavapipe limits, both measured on Mesa 22.3.6 (docs/rendering.md): 65535 tessellated vertices per
+  // draw, and 4096 input vertices per non-indexed tessellated draw, whatever the factor.
+  const std::uint32_t byOutput = std::max(1u, 65535u / verticesPerPatch(settings.mode, level));
+  const std::uint32_t byInput = kLavapipeInputVerticesPerDraw / (settings.mode == RenderMode::ACC ? 4u : 3u);
+  return std::min(byOutput, byInput);
+}
+
+void TreeRenderer::beginFrame(VkCommandBuffer cmd, const Camera& camera, VkExtent2D extent, const RenderSettings& s) {
+  const float aspect = static_cast<float>(extent.width) / static_cast<float>(std::max(1u, extent.height));
+  SceneUniforms u{};
+  u.view = viewMatrix(camera);
+  u.viewProj = projectionMatrix(camera, aspect) * u.view;
+  u.inverseViewProj = glm::inverse(u.viewProj);
+  u.cameraPos = glm::vec4(camera.eye, 1.0f);
+  u.lightDir = glm::vec4(glm::normalize(s.lightDirection), s.lightIntensity);
+  u.viewport = glm::vec4(static_cast<float>(extent.width), static_cast<float>(extent.height), 1.0f / static_cast<float>(extent.width),
+                         1.0f / static_cast<float>(extent.height));
+  u.tess = glm::vec4(std::clamp(s.tessLevel, 1.0f, 64.0f), s.adaptivePixels, std::clamp(s.maxLevel, 1.0f, 64.0f), s.cull ? 1.0f : 0.0f);
+  u.displace = glm::vec4(s.displacement, s.displacementBias, s.seamFade, s.textureRepeat);
+  u.skyTop = glm::vec4(0.32f, 0.52f, 0.82f, 1.0f);
+  u.skyHorizon = glm::vec4(0.78f, 0.85f, 0.92f, 1.0f);
+  // The ground fades fully into the horizon colour at this distance from the eye (and ends at four times it).
+  const float groundRadius = tree_ ? std::clamp(10.0f * glm::length(tree_->bounds.hi - tree_->bounds.lo), 60.0f, 400.0f) : 100.0f;
+  u.ground = glm::vec4(0.30f, 0.36f, 0.20f, groundRadius);
+  u.flags = glm::uvec4(captureCapacity_ > 0 ? 1u : 0u, 0u, 0u, 0u);
+  std::memcpy(scene_.mapped(), &u, sizeof u);
+  if (captureCapacity_ > 0) static_cast<std::uint32_t*>(capture_.mapped())[0] = 0;
+  if (statistics_) vkCmdResetQueryPool(cmd, statistics_, 0, 1);
+  if (timestamps_) vkCmdResetQueryPool(cmd, timestamps_, 0, kTimestampCount);
+}
+
+void TreeRenderer::draw(VkCommandBuffer cmd, VkExtent2D extent, const RenderSettings& s, const glm::mat4& model) {
+  const VkViewport viewport{0.0f, 0.0f, static_cast<float>(extent.width), static_cast<float>(extent.height), 0.0f, 1.0f};
+  const VkRect2D scissor{{0, 0}, extent};
+  vkCmdSetViewport(cmd, 0, 1, &viewport);
+  vkCmdSetScissor(cmd, 0, 1, &scissor);
+  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.layout, 0, 1, &set_, 0, nullptr);
+  DrawConstants constants{};
+  std::memcpy(constants.model, glm::value_ptr(model), sizeof constants.model);
+  const VkShaderStageFlags stages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT |
+                                    VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
+  vkCmdPushConstants(cmd, pipelines_.layout, stages, 0, sizeof constants, &constants);
+
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.sky);
+  vkCmdDraw(cmd, 3, 1, 0, 0);
+  if (s.ground) {
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.ground);
+    vkCmdDraw(cmd, 6, 1, 0, 0);
+  }
+  drewTree_ = tree_ != nullptr && tree_->patchCount > 0;
+  lastDraws_ = 0;
+  if (!drewTree_) return;
+
+  const auto mode = static_cast<std::size_t>(s.mode);
+  const std::uint32_t chunk = primitivesPerDraw(s);
+  if (timestamps_) vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, timestamps_, 0);
+  if (statistics_) vkCmdBeginQuery(cmd, statistics_, 0, 0);
+  auto drawTree = [&](VkPipeline pipeline) {
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
+    if (s.mode == RenderMode::Flat) {
+      const VkDeviceSize offset = 0;
+      const VkBuffer vertices = tree_->vertices.handle();
+      vkCmdBindVertexBuffers(cmd, 0, 1, &vertices, &offset);
+      vkCmdBindIndexBuffer(cmd, tree_->indices.handle(), 0, VK_INDEX_TYPE_UINT32);
+    }
+    const std::uint32_t total = s.mode == RenderMode::ACC ? tree_->patchCount : tree_->triangles;
+    for (std::uint32_t base = 0; base < total; base += chunk) {
+      const std::uint32_t count = std::min(chunk, total - base);
+      constants.patchBase = base;
+      vkCmdPushConstants(cmd, pipelines_.layout, stages, 0, sizeof constants, &constants);
+      // PN and ACC fetch their corners in the control stage; only flat uses the vertex input.
+      if (s.mode == RenderMode::ACC) vkCmdDraw(cmd, 4 * count, 1, 4 * base, 0);
+      else if (s.mode == RenderMode::PN) vkCmdDraw(cmd, 3 * count, 1, 3 * base, 0);
+      else vkCmdDrawIndexed(cmd, 3 * count, 1, 3 * base, 0, 0);
+      ++lastDraws_;
+    }
+  };
+  drawTree(pipelines_.tree[mode]);
+  if (statistics_) vkCmdEndQuery(cmd, statistics_, 0);
+  if (timestamps_) vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, timestamps_, 1);
+  if (s.wireframe && pipelines_.wireframe[mode]) drawTree(pipelines_.wireframe[mode]);
+}
+
+FrameStats TreeRenderer::stats() const {
+  FrameStats f;
+  f.draws = lastDraws_;
+  if (!drewTree_) return f;
+  const VkDevice device = context_.device();
+  if (statistics_) {
+    std::uint64_t primitives = 0;
+    if (vkGetQueryPoolResults(device, statistics_, 0, 1, sizeof primitives, &primitives, sizeof primitives,
+                              VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT) == VK_SUCCESS) {
+      f.triangles = primitives;
+      f.hasTriangles = true;
+    }
+  }
+  if (timestamps_) {
+    std::uint64_t t[kTimestampCount] = {};
+    if (vkGetQueryPoolResults(device, timestamps_, 0, kTimestampCount, sizeof t, t, sizeof t[0],
+                              VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT) == VK_SUCCESS) {
+      f.gpuMilliseconds = static_cast<double>(t[1] - t[0]) * context_.properties().limits.timestampPeriod * 1e-6;
+      f.hasTime = true;
+    }
+  }
+  return f;
+}
+
+}  // namespace arbor::render

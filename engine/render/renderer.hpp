@@ -1,0 +1,85 @@
+#pragma once
+// Records a frame of sky, ground and tree into a render pass, in any of the three modes, splitting tree draws
+// where the driver needs it, and measures what the GPU did (triangles generated, time).
+#include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
+
+#include "camera.hpp"
+#include "gpu_tree.hpp"
+#include "image/png_io.hpp"
+#include "pipelines.hpp"
+#include "vk/texture.hpp"
+
+namespace arbor::render {
+
+struct RenderSettings {
+  RenderMode mode = RenderMode::ACC;
+  float tessLevel = 8.0f;        // uniform tessellation factor (1..64)
+  float adaptivePixels = 0.0f;   // > 0: factors aim at edges of this many pixels instead
+  float maxLevel = 64.0f;
+  float displacement = 0.0f;     // s in (d - b) r s
+  float displacementBias = 0.5f; // b
+  float seamFade = 0.2f;         // |w| below which displacement and bump fade out
+  float textureRepeat = 1.0f;    // texture repeats per unit of v
+  bool wireframe = false;        // outline the tessellated triangles over the surface
+  bool ground = true;
+  bool cull = true;              // skip patches outside the view
+  std::uint32_t patchesPerDraw = 0;  // > 0: split tree draws into this many patches (tests); 0: what the driver needs
+  glm::vec3 lightDirection{0.45f, -0.6f, 0.75f};
+  float lightIntensity = 1.0f;
+};
+
+struct FrameStats {
+  std::uint64_t triangles = 0;   // primitives that reached clipping (pipeline statistics), tree only
+  double gpuMilliseconds = 0.0;  // tree draws, from timestamps
+  std::uint32_t draws = 0;
+  bool hasTriangles = false, hasTime = false;
+};
+
+// Evaluated limit points written by the ACC evaluation stage when capture is on (tests).
+struct CapturedPoint {
+  std::uint32_t patch;
+  float u, v;
+  glm::vec3 position;
+};
+
+class TreeRenderer {
+ public:
+  TreeRenderer(const vk::VulkanContext& context, VkRenderPass renderPass, VkSampleCountFlagBits samples,
+               const Image& barkColor, const Image& barkHeight);
+  ~TreeRenderer();
+  TreeRenderer(const TreeRenderer&) = delete;
+  TreeRenderer& operator=(const TreeRenderer&) = delete;
+
+  void setTree(const GpuTree* tree);
+  // Captures up to `capacity` evaluated ACC points in the next frames (0 turns it off).
+  void setCapture(std::uint32_t capacity);
+  std::vector<CapturedPoint> captured() const;
+
+  // Before the render pass begins: reset the queries, upload the scene.
+  void beginFrame(VkCommandBuffer cmd, const Camera& camera, VkExtent2D extent, const RenderSettings& settings);
+  // Inside the render pass.
+  void draw(VkCommandBuffer cmd, VkExtent2D extent, const RenderSettings& settings, const glm::mat4& model = glm::mat4(1.0f));
+  // After the frame's commands have completed.
+  FrameStats stats() const;
+
+  // Patches (or triangles) per draw: lavapipe wraps its 16-bit indices beyond 65535 tessellated vertices.
+  std::uint32_t primitivesPerDraw(const RenderSettings& settings) const;
+
+ private:
+  const vk::VulkanContext& context_;
+  Pipelines pipelines_;
+  vk::GpuImage barkColor_, barkHeight_;
+  VkSampler sampler_ = VK_NULL_HANDLE;
+  vk::Buffer scene_;
+  vk::Buffer capture_;
+  std::uint32_t captureCapacity_ = 0;
+  VkDescriptorPool pool_ = VK_NULL_HANDLE;
+  VkDescriptorSet set_ = VK_NULL_HANDLE;
+  VkQueryPool statistics_ = VK_NULL_HANDLE, timestamps_ = VK_NULL_HANDLE;
+  const GpuTree* tree_ = nullptr;
+  std::uint32_t lastDraws_ = 0;
+  bool drewTree_ = false;
+};
+
+}  // namespace arbor::render

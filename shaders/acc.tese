@@ -1,0 +1,90 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+// ACC evaluation: the bicubic Bezier patch at the tessellated (u, v); normals from the patch's tangents,
+// pulled to the exact limit normals towards the corners; texture coordinates with the seam-safe mix of the
+// subdivided and the interpolated u (Nystad 6.3.2); displacement along the normal (5.5.1).
+
+layout(quads, equal_spacing, ccw) in;
+
+#include "scene.glsl"
+#include "bark.glsl"
+
+layout(location = 0) in vec3 bezierPosition[];
+layout(location = 1) in vec4 bezierUvwRadius[];
+layout(location = 2) patch in vec3 cornerNormal[4];
+layout(location = 6) patch in vec3 cornerUvw[4];
+
+layout(location = 0) out vec3 worldPosition;
+layout(location = 1) out vec3 worldNormal;
+layout(location = 2) out vec3 uvw;
+layout(location = 3) out float radius;
+
+// Test hook: the evaluated limit points, before displacement, with their patch and (u, v).
+layout(set = 0, binding = 6, std430) buffer Capture {
+  uint count;
+  uint capacity;
+  uint pad0, pad1;
+  vec4 entries[];  // pairs: (patch, u, v, 0), (x, y, z, 0)
+} capture;
+
+vec3 safeNormalize(vec3 v) { return dot(v, v) > 1e-30 ? normalize(v) : vec3(0.0); }
+
+void bernstein(float t, out vec4 b, out vec4 d) {
+  float s = 1.0 - t;
+  b = vec4(s * s * s, 3.0 * s * s * t, 3.0 * s * t * t, t * t * t);
+  d = vec4(-3.0 * s * s, 3.0 * s * s - 6.0 * s * t, 6.0 * s * t - 3.0 * t * t, 3.0 * t * t);
+}
+
+void main() {
+  float u = gl_TessCoord.x, v = gl_TessCoord.y;
+  vec4 bu, du, bv, dv;
+  bernstein(u, bu, du);
+  bernstein(v, bv, dv);
+  vec3 p = vec3(0.0), pu = vec3(0.0), pv = vec3(0.0);
+  vec4 a = vec4(0.0);
+  for (int row = 0; row < 4; ++row) {
+    for (int column = 0; column < 4; ++column) {
+      vec3 b = bezierPosition[row * 4 + column];
+      p += bv[row] * bu[column] * b;
+      pu += bv[row] * du[column] * b;
+      pv += dv[row] * bu[column] * b;
+      a += bv[row] * bu[column] * bezierUvwRadius[row * 4 + column];
+    }
+  }
+
+  // Shading normal (as accNormal in generator/patches/acc.cpp): the geometry patch's normal (u runs corner
+  // 0 -> 1, v corner 0 -> 3: counter-clockwise from outside), corrected towards the exact limit normal at each
+  // corner by (limit normal - geometry normal there), weighted by that corner's Bernstein product.
+  vec3 n = safeNormalize(cross(pu, pv));
+  float w[4] = float[4](bu.x * bv.x, bu.w * bv.x, bu.w * bv.w, bu.x * bv.w);
+  if (any(notEqual(cornerNormal[0], vec3(0.0)))) {  // fallback patches have no corner normals
+    vec3 geometryAt[4] = vec3[4](
+        safeNormalize(cross(bezierPosition[1] - bezierPosition[0], bezierPosition[4] - bezierPosition[0])),
+        safeNormalize(cross(bezierPosition[3] - bezierPosition[2], bezierPosition[7] - bezierPosition[3])),
+        safeNormalize(cross(bezierPosition[15] - bezierPosition[14], bezierPosition[15] - bezierPosition[11])),
+        safeNormalize(cross(bezierPosition[13] - bezierPosition[12], bezierPosition[12] - bezierPosition[8])));
+    for (int i = 0; i < 4; ++i) n += w[i] * (cornerNormal[i] - geometryAt[i]);
+  }
+  n = safeNormalize(n);
+
+  if (scene.flags.x != 0u) {
+    uint slot = atomicAdd(capture.count, 1u);
+    if (slot < capture.capacity) {
+      capture.entries[2u * slot] = vec4(float(uint(gl_PrimitiveID) + draw.patchBase), u, v, 0.0);
+      capture.entries[2u * slot + 1u] = vec4(p, 0.0);
+    }
+  }
+
+  // Seam-safe texture coordinates: where |w| is small (near a seam) u comes from the corners directly.
+  vec3 interpolated = mix(mix(cornerUvw[0], cornerUvw[1], u), mix(cornerUvw[3], cornerUvw[2], u), v);
+  float flip = a.z;
+  uvw = vec3(abs(flip) * a.x + (1.0 - abs(flip)) * interpolated.x, a.y, flip);
+  radius = a.w;
+
+  p += n * displacement(uvw, radius, displacementLod(max(gl_TessLevelInner[0], gl_TessLevelInner[1])));
+
+  vec4 world = draw.model * vec4(p, 1.0);
+  worldPosition = world.xyz;
+  worldNormal = mat3(draw.model) * n;
+  gl_Position = scene.viewProj * world;
+}

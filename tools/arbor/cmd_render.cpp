@@ -1,0 +1,172 @@
+// arbor render: a tree rendered offscreen with the tessellation pipelines, written as PNG, with the frame
+// time and the number of triangles the GPU generated.
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <memory>
+
+#include "assets.hpp"
+#include "commands.hpp"
+#include "common/text_util.hpp"
+#include "growth/weber_penn.hpp"
+#include "image/png_io.hpp"
+#include "mesh/tree_mesh.hpp"
+#include "render/render_session.hpp"
+
+namespace arbor::cli {
+
+namespace {
+
+struct RenderOptions {
+  std::string species;
+  std::uint64_t seed = 1;
+  int levels = 0;
+  std::string mode = "acc";
+  float tess = 8.0f;
+  float adaptive = 0.0f;
+  float displace = 0.0f;
+  std::string size = "640x800";
+  std::string camera;
+  float azimuth = 25.0f, elevation = 6.0f;
+  std::string out;
+  int msaa = 1;
+  int frames = 1;
+  std::string device;
+  bool validation = false;
+  bool wireframe = false;
+  bool noGround = false;
+  bool quiet = false;
+};
+
+render::RenderMode parseMode(const std::string& mode) {
+  if (mode == "flat") return render::RenderMode::Flat;
+  if (mode == "pn") return render::RenderMode::PN;
+  if (mode == "acc") return render::RenderMode::ACC;
+  throw SpeciesError(mode, "--mode", "unknown mode; allowed: flat, pn, acc");
+}
+
+void parseSize(const std::string& text, std::uint32_t& width, std::uint32_t& height) {
+  unsigned w = 0, h = 0;
+  char x = 0, rest = 0;
+  if (std::sscanf(text.c_str(), "%u%c%u%c", &w, &x, &h, &rest) != 3 || x != 'x' || w < 16 || h < 16 || w > 8192 || h > 8192) {
+    throw SpeciesError(text, "--size", "expected WIDTHxHEIGHT with each in [16, 8192], e.g. 640x800");
+  }
+  width = w;
+  height = h;
+}
+
+// Validation is on when asked for, or when ARBOR_VALIDATION=1 (the tests set it).
+bool validationWanted(bool flag) {
+  const char* env = std::getenv("ARBOR_VALIDATION");
+  return flag || (env && std::string(env) == "1");
+}
+
+int runRender(const RenderOptions& o) {
+  render::RenderSettings settings;
+  settings.mode = parseMode(o.mode);
+  settings.tessLevel = o.tess;
+  settings.adaptivePixels = o.adaptive;
+  settings.displacement = o.displace;
+  settings.wireframe = o.wireframe;
+  settings.ground = !o.noGround;
+  std::uint32_t width = 0, height = 0;
+  parseSize(o.size, width, height);
+  if (!endsWith(o.out, ".png")) throw SpeciesError(o.out, "--out", "the picture is written as PNG; use a .png name");
+
+  const SpeciesParams params = loadSpeciesArgument(o.species);
+  GrowthOptions growth;
+  growth.seed = o.seed;
+  growth.levels = o.levels;
+  const TreeMesh tree = buildTreeMesh(generateSkeleton(params, growth));
+  const PatchSet patches = buildPatches(tree.mesh);
+
+  vk::ContextOptions contextOptions;
+  contextOptions.validation = validationWanted(o.validation);
+  contextOptions.device = o.device;
+  vk::VulkanContext context(contextOptions);
+  const auto bark = render::loadBarkImages(assetDirectory());
+  const auto samples = static_cast<VkSampleCountFlagBits>(o.msaa);
+  render::RenderSession session(context, width, height, samples, bark.color, bark.height);
+  session.setTree(tree.mesh, patches);
+
+  render::Camera camera;
+  const float aspect = static_cast<float>(width) / static_cast<float>(height);
+  if (!o.camera.empty()) {
+    try {
+      camera = render::parseCamera(o.camera);
+    } catch (const std::invalid_argument& e) {
+      throw SpeciesError(o.camera, "--camera", e.what());
+    }
+  } else {
+    camera = render::frameBounds(session.tree()->bounds, o.azimuth, o.elevation, aspect);
+  }
+
+  std::vector<double> gpu, cpu;
+  render::FrameResult last;
+  for (int f = 0; f < o.frames; ++f) {
+    last = session.render(camera, settings);
+    if (f > 0 || o.frames == 1) {  // the first of several frames warms caches up and is not counted
+      gpu.push_back(last.gpu.gpuMilliseconds);
+      cpu.push_back(last.cpuMilliseconds);
+    }
+  }
+  writePng(o.out, session.image());
+  if (context.validationErrors() > 0) {
+    std::fprintf(stderr, "arbor: error: %u Vulkan validation errors (see above)\n", context.validationErrors());
+    return kExitFailure;
+  }
+  if (o.quiet) return 0;
+  std::sort(gpu.begin(), gpu.end());
+  std::sort(cpu.begin(), cpu.end());
+  const render::GpuTree& gpuTree = *session.tree();
+  std::printf("%s on %s%s\n", params.name.c_str(), context.deviceDescription().c_str(),
+              contextOptions.validation ? ", validation on" : "");
+  std::printf("  mode             %s", render::renderModeName(settings.mode));
+  if (settings.mode != render::RenderMode::Flat) {
+    if (settings.adaptivePixels > 0.0f) std::printf(", adaptive to %.1f px edges", static_cast<double>(settings.adaptivePixels));
+    else std::printf(", tessellation factor %g", static_cast<double>(settings.tessLevel));
+  }
+  if (settings.displacement != 0.0f) std::printf(", displacement %g", static_cast<double>(settings.displacement));
+  std::printf("\n  mesh             %zu quads: %u regular, %u extraordinary, %u fallback patches; %.1f MiB on the GPU\n",
+              tree.mesh.quads.size(), gpuTree.regular, gpuTree.extraordinary, gpuTree.fallback,
+              static_cast<double>(gpuTree.bytes) / (1024.0 * 1024.0));
+  if (last.gpu.hasTriangles) {
+    std::printf("  triangles        %llu generated (clipping primitives), %u draws\n",
+                static_cast<unsigned long long>(last.gpu.triangles), last.gpu.draws);
+  }
+  if (last.gpu.hasTime) std::printf("  frame            %.2f ms GPU (tree, median of %zu)", gpu[gpu.size() / 2], gpu.size());
+  std::printf("%s%.2f ms CPU (record, submit, wait)\n", last.gpu.hasTime ? ", " : "  frame            ", cpu[cpu.size() / 2]);
+  std::printf("wrote %s (%ux%u)\n", o.out.c_str(), width, height);
+  return 0;
+}
+
+}  // namespace
+
+void addRenderCommand(CLI::App& app, Action& action) {
+  auto o = std::make_shared<RenderOptions>();
+  CLI::App* cmd = app.add_subcommand("render", "Render a tree offscreen with GPU tessellation (Vulkan) to a PNG.");
+  cmd->add_option("species", o->species, "Preset name or .json/.xml species file")->required();
+  cmd->add_option("--seed", o->seed, "Random seed")->capture_default_str();
+  cmd->add_option("--levels", o->levels, "Stem levels to grow (default: the species' Levels)")->check(CLI::Range(1, 8));
+  cmd->add_option("--mode", o->mode, "flat (coarse mesh), pn (PN-triangles), acc (Catmull-Clark approximation)")
+      ->capture_default_str();
+  cmd->add_option("--tess", o->tess, "Uniform tessellation factor")->check(CLI::Range(1.0, 64.0))->capture_default_str();
+  cmd->add_option("--adaptive", o->adaptive, "Adaptive tessellation: target edge length in pixels (overrides --tess)")
+      ->check(CLI::Range(0.5, 1000.0));
+  cmd->add_option("--displace", o->displace, "Displacement scale s in (d - b) r s (0: off)")->check(CLI::Range(-10.0, 10.0));
+  cmd->add_option("--size", o->size, "Image size WIDTHxHEIGHT")->capture_default_str();
+  cmd->add_option("--camera", o->camera, "Camera as ex,ey,ez,tx,ty,tz[,fov degrees] (default: framed on the tree)");
+  cmd->add_option("--azimuth", o->azimuth, "Framing camera azimuth in degrees")->capture_default_str();
+  cmd->add_option("--elevation", o->elevation, "Framing camera elevation in degrees")->check(CLI::Range(-89.0, 89.0))->capture_default_str();
+  cmd->add_option("--msaa", o->msaa, "Samples per pixel (1, 2, 4, 8)")->check(CLI::IsMember({1, 2, 4, 8}))->capture_default_str();
+  cmd->add_option("--frames", o->frames, "Frames to render; timings are medians after the first")->check(CLI::Range(1, 10000))->capture_default_str();
+  cmd->add_option("--device", o->device, "Prefer the Vulkan device whose name contains this");
+  cmd->add_flag("--validation", o->validation, "Enable the Khronos validation layer (also ARBOR_VALIDATION=1); errors fail the run");
+  cmd->add_flag("--wireframe", o->wireframe, "Outline the tessellated triangles");
+  cmd->add_flag("--no-ground", o->noGround, "Leave out the ground");
+  cmd->add_option("--out", o->out, "Output PNG")->required();
+  cmd->add_flag("--quiet", o->quiet, "Print nothing on success");
+  cmd->callback([o, &action] { action = [o] { return runRender(*o); }; });
+}
+
+}  // namespace arbor::cli
