@@ -28,7 +28,7 @@ TEST_CASE("the tessellation shaders evaluate the ACC patches of the CPU referenc
   settings.tessLevel = level;
   settings.cull = false;  // every patch, seen or not
   const std::uint32_t errorsBefore = test::vulkan().validationErrors();
-  session.render(render::frameBounds(session.tree()->bounds, 0.0f, 0.0f, 1.0f), settings);
+  session.render(render::frameBounds(render::plantedBounds(*session.tree()), 0.0f, 0.0f, 1.0f), settings);
   CHECK(test::vulkan().validationErrors() == errorsBefore);
 
   const auto points = session.renderer().captured();

@@ -1,5 +1,8 @@
 #include "gpu_tree.hpp"
 
+#include <algorithm>
+
+#include <glm/gtc/matrix_transform.hpp>
 #include <glm/vec4.hpp>
 
 namespace arbor::render {
@@ -45,7 +48,20 @@ GpuTree uploadTree(const vk::VulkanContext& context, const QuadMesh& mesh, const
   tree.patchCount = static_cast<std::uint32_t>(patches.size());
   tree.bytes = tree.vertices.size() + tree.indices.size() + tree.patches.size() + tree.points.size();
   tree.bounds = meshBounds(mesh);
+  const float baseBand = tree.bounds.lo.z + 1e-3f * (tree.bounds.hi.z - tree.bounds.lo.z);
+  for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
+    if (mesh.level[i] == 0 && mesh.positions[i].z <= baseBand) tree.plantingDepth = std::max(tree.plantingDepth, mesh.radius[i]);
+  }
   return tree;
+}
+
+glm::mat4 plantedModel(const GpuTree& tree) {
+  return glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, -tree.plantingDepth));
+}
+
+Bounds plantedBounds(const GpuTree& tree) {
+  const glm::vec3 down(0.0f, 0.0f, tree.plantingDepth);
+  return Bounds{tree.bounds.lo - down, tree.bounds.hi - down};
 }
 
 }  // namespace arbor::render

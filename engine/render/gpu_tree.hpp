@@ -16,8 +16,14 @@ struct GpuTree {
   std::uint32_t triangles = 0, patchCount = 0;
   std::uint32_t regular = 0, extraordinary = 0, fallback = 0;
   std::size_t bytes = 0;  // all buffers together
-  Bounds bounds;
+  Bounds bounds;           // object space
+  float plantingDepth = 0;  // the trunk's base radius: the closed base's rounded limit surface goes underground
 };
+
+// Where the tree stands in the world: sunk by its planting depth.
+glm::mat4 plantedModel(const GpuTree& tree);
+// The world-space bounds of the planted tree.
+Bounds plantedBounds(const GpuTree& tree);
 
 GpuTree uploadTree(const vk::VulkanContext& context, const QuadMesh& mesh, const PatchSet& patches);
 

@@ -30,7 +30,7 @@ FrameResult RenderSession::render(const Camera& camera, const RenderSettings& se
     begin.clearValueCount = static_cast<std::uint32_t>(clear.size());
     begin.pClearValues = clear.data();
     vkCmdBeginRenderPass(cmd, &begin, VK_SUBPASS_CONTENTS_INLINE);
-    renderer_.draw(cmd, target_.extent(), settings);
+    renderer_.draw(cmd, target_.extent(), settings, tree_ ? plantedModel(*tree_) : glm::mat4(1.0f));
     vkCmdEndRenderPass(cmd);
     target_.recordReadback(cmd);
   });

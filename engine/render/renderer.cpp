@@ -1,6 +1,7 @@
 #include "renderer.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 
 #include <glm/gtc/type_ptr.hpp>
@@ -29,10 +30,12 @@ constexpr std::uint32_t kCaptureHeader = 16;  // count, capacity, two words of p
 constexpr std::uint32_t kTimestampCount = 2;
 constexpr std::uint32_t kLavapipeInputVerticesPerDraw = 4096;  // beyond it lavapipe garbles patches
 
-// Tessellated vertices one patch can emit at `level` with equal spacing.
+// Tessellated vertices one patch emits at `level` with equal spacing (which rounds levels up). A triangle is
+// tessellated as concentric rings of 3L, 3(L - 2), ... vertices, ending in a point (L even) or a triangle.
 std::uint32_t verticesPerPatch(RenderMode mode, float level) {
-  const auto l = static_cast<std::uint32_t>(std::clamp(level, 1.0f, 64.0f));
-  return mode == RenderMode::ACC ? (l + 1) * (l + 1) : (l + 1) * (l + 2) / 2;
+  const auto l = static_cast<std::uint32_t>(std::ceil(std::clamp(level, 1.0f, 64.0f)));
+  if (mode == RenderMode::ACC) return (l + 1) * (l + 1);
+  return l % 2 == 0 ? 1 + 3 * l * (l + 2) / 4 : 3 * ((l + 1) / 2) * ((l + 1) / 2);
 }
 
 }  // namespace

@@ -110,6 +110,8 @@ void addBenchCommand(CLI::App& app, Action& action) {
   mesh->add_option("--seed", m->seed, "Random seed")->capture_default_str();
   mesh->add_option("--levels", m->levels, "Stem levels (default: each species' Levels)")->check(CLI::Range(1, 8));
   mesh->callback([m, &action] { action = [m] { return runBenchMesh(*m); }; });
+
+  addBenchTessCommand(*bench, action);
 }
 
 }  // namespace arbor::cli

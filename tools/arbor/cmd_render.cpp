@@ -12,6 +12,7 @@
 #include "image/png_io.hpp"
 #include "mesh/tree_mesh.hpp"
 #include "render/render_session.hpp"
+#include "render_options.hpp"
 
 namespace arbor::cli {
 
@@ -37,29 +38,6 @@ struct RenderOptions {
   bool noGround = false;
   bool quiet = false;
 };
-
-render::RenderMode parseMode(const std::string& mode) {
-  if (mode == "flat") return render::RenderMode::Flat;
-  if (mode == "pn") return render::RenderMode::PN;
-  if (mode == "acc") return render::RenderMode::ACC;
-  throw SpeciesError(mode, "--mode", "unknown mode; allowed: flat, pn, acc");
-}
-
-void parseSize(const std::string& text, std::uint32_t& width, std::uint32_t& height) {
-  unsigned w = 0, h = 0;
-  char x = 0, rest = 0;
-  if (std::sscanf(text.c_str(), "%u%c%u%c", &w, &x, &h, &rest) != 3 || x != 'x' || w < 16 || h < 16 || w > 8192 || h > 8192) {
-    throw SpeciesError(text, "--size", "expected WIDTHxHEIGHT with each in [16, 8192], e.g. 640x800");
-  }
-  width = w;
-  height = h;
-}
-
-// Validation is on when asked for, or when ARBOR_VALIDATION=1 (the tests set it).
-bool validationWanted(bool flag) {
-  const char* env = std::getenv("ARBOR_VALIDATION");
-  return flag || (env && std::string(env) == "1");
-}
 
 int runRender(const RenderOptions& o) {
   render::RenderSettings settings;
@@ -98,7 +76,7 @@ int runRender(const RenderOptions& o) {
       throw SpeciesError(o.camera, "--camera", e.what());
     }
   } else {
-    camera = render::frameBounds(session.tree()->bounds, o.azimuth, o.elevation, aspect);
+    camera = render::frameBounds(render::plantedBounds(*session.tree()), o.azimuth, o.elevation, aspect);
   }
 
   std::vector<double> gpu, cpu;

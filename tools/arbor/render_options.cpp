@@ -1,0 +1,36 @@
+#include "render_options.hpp"
+
+#include <cstdio>
+#include <cstdlib>
+
+#include "species/species_io.hpp"
+
+namespace arbor::cli {
+
+render::RenderMode parseMode(const std::string& mode, const std::string& field) {
+  if (mode == "flat") return render::RenderMode::Flat;
+  if (mode == "pn") return render::RenderMode::PN;
+  if (mode == "acc") return render::RenderMode::ACC;
+  throw SpeciesError(mode, field, "unknown mode; allowed: flat, pn, acc");
+}
+
+void parseSize(const std::string& text, std::uint32_t& width, std::uint32_t& height) {
+  unsigned w = 0, h = 0;
+  char x = 0, rest = 0;
+  if (std::sscanf(text.c_str(), "%u%c%u%c", &w, &x, &h, &rest) != 3 || x != 'x' || w < 16 || h < 16 || w > 8192 || h > 8192) {
+    throw SpeciesError(text, "--size", "expected WIDTHxHEIGHT with each in [16, 8192], e.g. 640x800");
+  }
+  width = w;
+  height = h;
+}
+
+bool validationWanted(bool flag) {
+#ifndef NDEBUG
+  return true;
+#else
+  const char* env = std::getenv("ARBOR_VALIDATION");
+  return flag || (env && std::string(env) == "1");
+#endif
+}
+
+}  // namespace arbor::cli

@@ -1,0 +1,17 @@
+#pragma once
+// Command-line values shared by `arbor render` and `arbor bench tess`: mode names, image sizes, validation.
+#include <cstdint>
+#include <string>
+
+#include "render/renderer.hpp"
+
+namespace arbor::cli {
+
+// "flat", "pn" or "acc"; anything else is bad input naming `field`.
+render::RenderMode parseMode(const std::string& mode, const std::string& field = "--mode");
+// "WIDTHxHEIGHT", each in [16, 8192].
+void parseSize(const std::string& text, std::uint32_t& width, std::uint32_t& height);
+// On when asked for, when ARBOR_VALIDATION=1 (the tests set it), and always in debug builds.
+bool validationWanted(bool flag);
+
+}  // namespace arbor::cli
