@@ -19,12 +19,12 @@ layout(location = 1) out vec3 worldNormal;
 layout(location = 2) out vec3 uvw;
 layout(location = 3) out float radius;
 
-// Test hook: the evaluated limit points, before displacement, with their patch and (u, v).
+// Test hook: the evaluated points before and after displacement, with their patch and (u, v).
 layout(set = 0, binding = 6, std430) buffer Capture {
   uint count;
   uint capacity;
   uint pad0, pad1;
-  vec4 entries[];  // pairs: (patch, u, v, 0), (x, y, z, 0)
+  vec4 entries[];  // triples: (patch, u, v, 0), (x, y, z, 0) on the patch, (x, y, z, flip) displaced
 } capture;
 
 vec3 safeNormalize(vec3 v) { return dot(v, v) > 1e-30 ? normalize(v) : vec3(0.0); }
@@ -67,13 +67,7 @@ void main() {
   }
   n = safeNormalize(n);
 
-  if (scene.flags.x != 0u) {
-    uint slot = atomicAdd(capture.count, 1u);
-    if (slot < capture.capacity) {
-      capture.entries[2u * slot] = vec4(float(uint(gl_PrimitiveID) + draw.patchBase), u, v, 0.0);
-      capture.entries[2u * slot + 1u] = vec4(p, 0.0);
-    }
-  }
+  vec3 onPatch = p;
 
   // Seam-safe texture coordinates: where |w| is small (near a seam) u comes from the corners directly.
   vec3 interpolated = mix(mix(cornerUvw[0], cornerUvw[1], u), mix(cornerUvw[3], cornerUvw[2], u), v);
@@ -81,7 +75,22 @@ void main() {
   uvw = vec3(abs(flip) * a.x + (1.0 - abs(flip)) * interpolated.x, a.y, flip);
   radius = a.w;
 
-  p += n * displacement(uvw, radius, displacementLod(max(gl_TessLevelInner[0], gl_TessLevelInner[1])));
+  // Displaced along the blend of the corner limit normals: on a shared edge it depends on that edge's two
+  // corners only, so neighbouring patches move their common points alike (the shading normal does not).
+  vec3 along = n;
+  if (any(notEqual(cornerNormal[0], vec3(0.0)))) {
+    along = safeNormalize(mix(mix(cornerNormal[0], cornerNormal[1], u), mix(cornerNormal[3], cornerNormal[2], u), v));
+  }
+  p += along * displacement(uvw, radius, displacementLod(p, radius));
+
+  if (scene.flags.x != 0u) {
+    uint slot = atomicAdd(capture.count, 1u);
+    if (slot < capture.capacity) {
+      capture.entries[3u * slot] = vec4(float(uint(gl_PrimitiveID) + draw.patchBase), u, v, uvw.x);
+      capture.entries[3u * slot + 1u] = vec4(onPatch, uvw.y);
+      capture.entries[3u * slot + 2u] = vec4(p, uvw.z);
+    }
+  }
 
   vec4 world = draw.model * vec4(p, 1.0);
   worldPosition = world.xyz;

@@ -12,7 +12,8 @@ layout(set = 0, binding = 0, std140) uniform Scene {
   vec4 skyTop;
   vec4 skyHorizon;
   vec4 ground;        // rgb, distance from the eye at which it has faded into the horizon (metres)
-  uvec4 flags;        // x: capture evaluated points, y: wireframe colouring
+  uvec4 flags;        // x: capture evaluated points, y: wireframe colouring, z: back faces in magenta
+  vec4 lens;          // x: pixels covered by one unit of length at unit distance
 } scene;
 
 struct TreeVertex {

@@ -13,6 +13,10 @@ layout(location = 3) in float radius;
 layout(location = 0) out vec4 color;
 
 void main() {
+  if (scene.flags.z != 0u && !gl_FrontFacing) {  // seen through a crack in the closed surface
+    color = vec4(1.0, 0.0, 1.0, 1.0);
+    return;
+  }
   vec2 tc = barkCoordinates(uvw);
   // The wrapped u jumps where the flip coordinate changes sign; its shifted twin is continuous there, so the
   // smaller of the two derivatives gives the texture level (a manually chosen MIP level at flip seams).

@@ -95,7 +95,8 @@ TEST_CASE("an unwritable output fails cleanly with 1", "[cli]") {
 }
 
 TEST_CASE("every subcommand has --help", "[cli]") {
-  for (const char* command : {"", "generate", "species", "bench", "bench generate"}) {
+  for (const char* command : {"", "generate", "species", "bench", "bench generate", "bench mesh", "bench tess", "render",
+                              "textures", "accuracy"}) {
     const Result r = run(std::string(command) + " --help");
     INFO(command);
     CHECK(r.exitCode == 0);
@@ -163,4 +164,68 @@ TEST_CASE("subdivided export has four times the quads per level", "[cli][mesh]")
 
 TEST_CASE("mesh options that make no sense for a skeleton are refused", "[cli]") {
   CHECK(run("generate palm --subdivide 1 --out " + arbor::test::tempPath("s.json")).exitCode == 2);
+}
+
+namespace {
+
+// Width and height from a PNG's IHDR chunk (big-endian at bytes 16 and 20).
+std::pair<std::uint32_t, std::uint32_t> pngSize(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  unsigned char header[24] = {};
+  in.read(reinterpret_cast<char*>(header), sizeof header);
+  REQUIRE(in.gcount() == 24);
+  REQUIRE(header[1] == 'P');
+  const auto word = [&](int at) {
+    return (std::uint32_t{header[at]} << 24) | (std::uint32_t{header[at + 1]} << 16) | (std::uint32_t{header[at + 2]} << 8) | header[at + 3];
+  };
+  return {word(16), word(20)};
+}
+
+}  // namespace
+
+TEST_CASE("render writes a PNG of the asked size and reports the triangles it generated", "[cli][render]") {
+  const std::string out = arbor::test::tempPath("render-palm.png");
+  fs::remove(out);
+  const Result r = run("render palm --levels 1 --mode acc --tess 3 --size 64x80 --validation --out " + out);
+  INFO(r.output);
+  REQUIRE(r.exitCode == 0);
+  CHECK_THAT(r.output, Catch::Contains("generated (clipping primitives)"));
+  CHECK_THAT(r.output, Catch::Contains("validation on"));
+  CHECK(pngSize(out) == std::make_pair(64u, 80u));
+}
+
+TEST_CASE("render refuses bad options with 2, naming the option, and writes nothing", "[cli][render]") {
+  const std::string out = arbor::test::tempPath("render-bad.png");
+  fs::remove(out);
+  const std::pair<const char*, const char*> cases[] = {
+      {"render palm --mode smooth --out ", "--mode"},
+      {"render palm --size 64by80 --out ", "--size"},
+      {"render palm --size 8x8 --out ", "--size"},
+      {"render palm --tess 65 --out ", "--tess"},
+      {"render palm --camera 1,2,3 --out ", "--camera"},
+      {"render palm --camera 0,0,1,0,0,1 --out ", "--camera"},
+      {"render no-such-tree --out ", "no-such-tree"},
+  };
+  for (const auto& [arguments, field] : cases) {
+    const Result r = run(std::string(arguments) + out);
+    INFO(arguments << "\n" << r.output);
+    CHECK(r.exitCode == 2);
+    CHECK_THAT(r.output, Catch::Contains(field));
+    CHECK_FALSE(fs::exists(out));
+  }
+  const Result jpeg = run("render palm --out " + arbor::test::tempPath("render-bad.jpg"));
+  CHECK(jpeg.exitCode == 2);
+  CHECK_THAT(jpeg.output, Catch::Contains("PNG"));
+}
+
+TEST_CASE("textures and bench tess refuse values out of range with 2", "[cli]") {
+  const Result size = run("textures --size 100 --out " + arbor::test::tempPath("textures-bad"));
+  CHECK(size.exitCode == 2);
+  CHECK_THAT(size.output, Catch::Contains("--size"));
+  const Result factors = run("bench tess palm --factors 1,99");
+  CHECK(factors.exitCode == 2);
+  CHECK_THAT(factors.output, Catch::Contains("--factors"));
+  const Result modes = run("bench tess palm --modes acc,magic");
+  CHECK(modes.exitCode == 2);
+  CHECK_THAT(modes.output, Catch::Contains("--modes"));
 }

@@ -1,10 +1,21 @@
 #!/usr/bin/env bash
-# The main job: installs what is missing, builds, then grows the demo tree and writes it to out/.
+# The main job: installs what is missing, builds, grows the demo tree, writes its skeleton and mesh, and renders
+# it offscreen with GPU tessellation (lavapipe when there is no GPU) to PNG files in out/.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 bash "$root/tools/install-deps.sh"
 bash "$root/tools/build.sh"
-mkdir -p "$root/out"
-"$root/build/tools/arbor" generate black-tupelo --seed 1 --quiet --out "$root/out/black-tupelo.json"
-"$root/build/tools/arbor" generate black-tupelo --seed 1 --out "$root/out/black-tupelo.glb"
-echo "demo: skeleton $root/out/black-tupelo.json, mesh $root/out/black-tupelo.glb"
+arbor="$root/build/tools/arbor"
+out="$root/out"
+mkdir -p "$out"
+"$arbor" generate black-tupelo --seed 1 --quiet --out "$out/black-tupelo.json"
+"$arbor" generate black-tupelo --seed 1 --out "$out/black-tupelo.glb"
+# The whole tree, adaptive ACC; a close-up of the displaced bark; the tessellation itself in wireframe.
+"$arbor" render black-tupelo --seed 1 --mode acc --adaptive 6 --msaa 4 --size 960x1200 --out "$out/black-tupelo.png"
+"$arbor" render black-tupelo --seed 1 --mode acc --adaptive 4 --displace 0.3 --msaa 4 --size 960x1200 \
+  --camera 1.5,-3.5,1.6,0,0,1.4,50 --out "$out/black-tupelo-bark.png"
+"$arbor" render black-tupelo --seed 1 --mode acc --tess 6 --wireframe --size 960x1200 \
+  --camera 2.5,-4,4,0,0,4.5,40 --out "$out/black-tupelo-wireframe.png"
+"$arbor" render palm --mode acc --adaptive 6 --msaa 4 --size 960x1200 --out "$out/palm.png"
+echo "demo: skeleton $out/black-tupelo.json, mesh $out/black-tupelo.glb"
+echo "demo: pictures $out/black-tupelo.png, $out/black-tupelo-bark.png, $out/black-tupelo-wireframe.png, $out/palm.png"

@@ -5,6 +5,8 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/vec4.hpp>
 
+#include "patches/acc.hpp"
+
 namespace arbor::render {
 
 namespace {
@@ -48,10 +50,25 @@ GpuTree uploadTree(const vk::VulkanContext& context, const QuadMesh& mesh, const
   tree.patchCount = static_cast<std::uint32_t>(patches.size());
   tree.bytes = tree.vertices.size() + tree.indices.size() + tree.patches.size() + tree.points.size();
   tree.bounds = meshBounds(mesh);
+  // Planted so that the limit surface is at full width at the ground: the closed base's corners (limit
+  // positions) are pulled up and in, and the rounding reaches about half a radius above them.
   const float baseBand = tree.bounds.lo.z + 1e-3f * (tree.bounds.hi.z - tree.bounds.lo.z);
-  for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
-    if (mesh.level[i] == 0 && mesh.positions[i].z <= baseBand) tree.plantingDepth = std::max(tree.plantingDepth, mesh.radius[i]);
+  float baseRadius = 0.0f, limitTop = tree.bounds.lo.z;
+  const auto position = [&mesh](std::uint32_t v) { return glm::dvec3(mesh.positions[v]); };
+  for (std::size_t p = 0; p < patches.size(); ++p) {
+    if (patches.kind[p] == PatchKind::Fallback) continue;
+    constexpr std::size_t kBezierCorner[4] = {0, 3, 15, 12};  // quad corner i's limit point among the 16
+    std::array<glm::dvec3, 16> bezier{};
+    bool built = false;
+    for (std::size_t i = 0; i < 4; ++i) {
+      const std::uint32_t v = mesh.quads[p][i];
+      if (mesh.level[v] != 0 || mesh.positions[v].z > baseBand) continue;
+      if (!built) bezier = accControlPoints(patches, p, position), built = true;
+      baseRadius = std::max(baseRadius, mesh.radius[v]);
+      limitTop = std::max(limitTop, static_cast<float>(bezier[kBezierCorner[i]].z));
+    }
   }
+  tree.plantingDepth = limitTop - tree.bounds.lo.z + 0.5f * baseRadius;
   return tree;
 }
 

@@ -17,7 +17,7 @@ struct GpuTree {
   std::uint32_t regular = 0, extraordinary = 0, fallback = 0;
   std::size_t bytes = 0;  // all buffers together
   Bounds bounds;           // object space
-  float plantingDepth = 0;  // the trunk's base radius: the closed base's rounded limit surface goes underground
+  float plantingDepth = 0;  // how far the tree is sunk so that the closed base's rounded limit surface is underground
 };
 
 // Where the tree stands in the world: sunk by its planting depth.

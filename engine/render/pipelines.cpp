@@ -144,7 +144,8 @@ VkPipeline build(VkDevice device, VkRenderPass renderPass, VkPipelineLayout layo
 }  // namespace
 
 void Pipelines::destroy(VkDevice device) {
-  for (VkPipeline p : {sky, ground, tree[0], tree[1], tree[2], wireframe[0], wireframe[1], wireframe[2]}) {
+  for (VkPipeline p : {sky, ground, tree[0], tree[1], tree[2], wireframe[0], wireframe[1], wireframe[2], twoSided[0],
+                       twoSided[1], twoSided[2]}) {
     if (p) vkDestroyPipeline(device, p, nullptr);
   }
   if (layout) vkDestroyPipelineLayout(device, layout, nullptr);
@@ -200,6 +201,9 @@ Pipelines createPipelines(const vk::VulkanContext& context, VkRenderPass renderP
   const PipelineSpec* specs[3] = {&flat, &pn, &acc};
   for (int m = 0; m < 3; ++m) {
     p.tree[m] = build(device, renderPass, p.layout, samples, *specs[m]);
+    PipelineSpec twoSided = *specs[m];
+    twoSided.cullBack = false;
+    p.twoSided[m] = build(device, renderPass, p.layout, samples, twoSided);
     if (context.features().fillModeNonSolid) {
       PipelineSpec wire = *specs[m];
       wire.wireframe = true;

@@ -14,6 +14,7 @@ struct Pipelines {
   VkPipeline sky = VK_NULL_HANDLE, ground = VK_NULL_HANDLE;
   VkPipeline tree[3] = {};       // by RenderMode
   VkPipeline wireframe[3] = {};  // null where the device has no fillModeNonSolid
+  VkPipeline twoSided[3] = {};   // no culling: back faces seen through cracks show (crack tests)
 
   void destroy(VkDevice device);
 };

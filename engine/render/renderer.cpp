@@ -24,9 +24,11 @@ struct SceneUniforms {
   glm::vec4 skyHorizon;
   glm::vec4 ground;
   glm::uvec4 flags;
+  glm::vec4 lens;
 };
 
 constexpr std::uint32_t kCaptureHeader = 16;  // count, capacity, two words of padding
+constexpr std::uint32_t kCaptureEntryBytes = 48;  // three vec4: patch and (u, v), point, displaced point
 constexpr std::uint32_t kTimestampCount = 2;
 constexpr std::uint32_t kLavapipeInputVerticesPerDraw = 4096;  // beyond it lavapipe garbles patches
 
@@ -95,7 +97,7 @@ TreeRenderer::~TreeRenderer() {
 
 void TreeRenderer::setCapture(std::uint32_t capacity) {
   captureCapacity_ = capacity;
-  capture_ = vk::hostBuffer(context_, kCaptureHeader + static_cast<std::size_t>(std::max(capacity, 1u)) * 32,
+  capture_ = vk::hostBuffer(context_, kCaptureHeader + static_cast<std::size_t>(std::max(capacity, 1u)) * kCaptureEntryBytes,
                             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
   std::memset(capture_.mapped(), 0, kCaptureHeader);
   static_cast<std::uint32_t*>(capture_.mapped())[1] = capacity;
@@ -108,8 +110,9 @@ std::vector<CapturedPoint> TreeRenderer::captured() const {
   const auto* entries = reinterpret_cast<const float*>(static_cast<const std::uint8_t*>(capture_.mapped()) + kCaptureHeader);
   std::vector<CapturedPoint> points(count);
   for (std::uint32_t i = 0; i < count; ++i) {
-    const float* e = entries + 8 * i;
-    points[i] = CapturedPoint{static_cast<std::uint32_t>(e[0]), e[1], e[2], glm::vec3(e[4], e[5], e[6])};
+    const float* e = entries + kCaptureEntryBytes / sizeof(float) * i;
+    points[i] = CapturedPoint{static_cast<std::uint32_t>(e[0]), e[1], e[2], glm::vec3(e[4], e[5], e[6]), glm::vec3(e[8], e[9], e[10]),
+                              glm::vec3(e[3], e[7], e[11])};
   }
   return points;
 }
@@ -176,7 +179,8 @@ void TreeRenderer::beginFrame(VkCommandBuffer cmd, const Camera& camera, VkExten
   // The ground fades fully into the horizon colour at this distance from the eye (and ends at four times it).
   const float groundRadius = tree_ ? std::clamp(10.0f * glm::length(tree_->bounds.hi - tree_->bounds.lo), 60.0f, 400.0f) : 100.0f;
   u.ground = glm::vec4(0.30f, 0.36f, 0.20f, groundRadius);
-  u.flags = glm::uvec4(captureCapacity_ > 0 ? 1u : 0u, 0u, 0u, 0u);
+  u.flags = glm::uvec4(captureCapacity_ > 0 ? 1u : 0u, 0u, s.revealBackFaces ? 1u : 0u, 0u);
+  u.lens = glm::vec4(0.5f * static_cast<float>(extent.height) / std::tan(0.5f * camera.fovY), 0.0f, 0.0f, 0.0f);
   std::memcpy(scene_.mapped(), &u, sizeof u);
   if (captureCapacity_ > 0) static_cast<std::uint32_t*>(capture_.mapped())[0] = 0;
   if (statistics_) vkCmdResetQueryPool(cmd, statistics_, 0, 1);
@@ -229,7 +233,7 @@ void TreeRenderer::draw(VkCommandBuffer cmd, VkExtent2D extent, const RenderSett
       ++lastDraws_;
     }
   };
-  drawTree(pipelines_.tree[mode]);
+  drawTree(s.revealBackFaces ? pipelines_.twoSided[mode] : pipelines_.tree[mode]);
   if (statistics_) vkCmdEndQuery(cmd, statistics_, 0);
   if (timestamps_) vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, timestamps_, 1);
   if (s.wireframe && pipelines_.wireframe[mode]) drawTree(pipelines_.wireframe[mode]);

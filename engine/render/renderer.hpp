@@ -24,6 +24,7 @@ struct RenderSettings {
   bool wireframe = false;        // outline the tessellated triangles over the surface
   bool ground = true;
   bool cull = true;              // skip patches outside the view
+  bool revealBackFaces = false;  // draw back faces too, in magenta: on a closed surface any that shows is a crack
   std::uint32_t patchesPerDraw = 0;  // > 0: split tree draws into this many patches (tests); 0: what the driver needs
   glm::vec3 lightDirection{0.45f, -0.6f, 0.75f};
   float lightIntensity = 1.0f;
@@ -36,11 +37,13 @@ struct FrameStats {
   bool hasTriangles = false, hasTime = false;
 };
 
-// Evaluated limit points written by the ACC evaluation stage when capture is on (tests).
+// Points the ACC evaluation stage wrote when capture is on (tests), in object space.
 struct CapturedPoint {
   std::uint32_t patch;
   float u, v;
-  glm::vec3 position;
+  glm::vec3 position;   // on the ACC patch
+  glm::vec3 displaced;  // after displacement (equal to position without it)
+  glm::vec3 uvw;        // texture coordinates there: seam-safe u, v, flip coordinate
 };
 
 class TreeRenderer {
