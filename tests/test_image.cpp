@@ -10,6 +10,7 @@
 #include "common/atomic_file.hpp"
 #include "image/bark_texture.hpp"
 #include "image/image_compare.hpp"
+#include "image/leaf_atlas.hpp"
 #include "image/png_io.hpp"
 #include "test_support.hpp"
 
@@ -271,4 +272,53 @@ TEST_CASE("the committed bark textures are what the generator makes", "[image][b
   CHECK(color.height == 512);
   CHECK(color.rgba == bark512().color.rgba);
   CHECK(height.rgba == bark512().height.rgba);
+}
+
+namespace {
+
+const Image& atlas512() {
+  static const Image atlas = makeLeafAtlas(512, 1);
+  return atlas;
+}
+
+}  // namespace
+
+TEST_CASE("the leaf atlas holds four different green cutouts, base at the bottom of each cell", "[image][leaves]") {
+  const Image& a = atlas512();
+  REQUIRE(a.width == 512);
+  const int cell = 256;
+  std::vector<std::vector<std::uint8_t>> alphas(kLeafAtlasCells);
+  for (int k = 0; k < kLeafAtlasCells; ++k) {
+    INFO("cell " << k);
+    const int x0 = (k % 2) * cell, y0 = (k / 2) * cell;
+    double covered = 0.0, r = 0.0, g = 0.0, b = 0.0, bottomCentre = 0.0;
+    for (int y = y0; y < y0 + cell; ++y) {
+      for (int x = x0; x < x0 + cell; ++x) {
+        const std::uint8_t* p = &a.rgba[(static_cast<std::size_t>(y) * 512 + x) * 4];
+        alphas[static_cast<std::size_t>(k)].push_back(p[3]);
+        if (p[3] < 128) continue;
+        covered += 1.0, r += p[0], g += p[1], b += p[2];
+        if (y >= y0 + cell - 8 && std::abs(x - (x0 + cell / 2)) <= 4) bottomCentre += 1.0;
+      }
+    }
+    const double share = covered / (cell * cell);
+    CHECK(share > 0.02);  // a leaf, not a speck
+    CHECK(share < 0.7);   // and not a square
+    CHECK(g > r);         // green
+    CHECK(r > b);
+    CHECK(bottomCentre > 0.0);  // the stalk meets the cell's bottom centre, where the leaf is attached
+    // The cell's top corners are transparent, so neighbouring cells do not bleed into each other's quads.
+    CHECK(a.rgba[(static_cast<std::size_t>(y0) * 512 + x0) * 4 + 3] == 0);
+    CHECK(a.rgba[(static_cast<std::size_t>(y0) * 512 + x0 + cell - 1) * 4 + 3] == 0);
+  }
+  for (int i = 0; i < kLeafAtlasCells; ++i) {
+    for (int j = i + 1; j < kLeafAtlasCells; ++j) CHECK(alphas[static_cast<std::size_t>(i)] != alphas[static_cast<std::size_t>(j)]);
+  }
+}
+
+TEST_CASE("the leaf atlas is deterministic and the committed copy is what the generator makes", "[image][leaves]") {
+  CHECK(makeLeafAtlas(64, 1).rgba == makeLeafAtlas(64, 1).rgba);
+  CHECK_THROWS_AS(makeLeafAtlas(100, 1), std::invalid_argument);
+  const Image committed = readPng((std::filesystem::path(ARBOR_ASSET_DIR) / "textures" / "leaf_atlas.png").string());
+  CHECK(committed.rgba == atlas512().rgba);
 }
