@@ -18,18 +18,13 @@
 #include "patches/acc_accuracy.hpp"
 #include "patches/limit_reference.hpp"
 #include "patches/patch_set.hpp"
+#include "mesh_support.hpp"
 #include "test_support.hpp"
 
 using namespace arbor;
+using test::meshOf;
 
 namespace {
-
-TreeMesh meshOf(const std::string& preset, std::uint64_t seed = 1, int levels = 0) {
-  GrowthOptions o;
-  o.seed = seed;
-  o.levels = levels;
-  return buildTreeMesh(generateSkeleton(test::loadPreset(preset), o));
-}
 
 // Twigs end in points: the floor keeps ratios finite there (as measureAccAccuracy does).
 double radiusAt(const QuadMesh& mesh, std::size_t patch) {

@@ -7,6 +7,7 @@
 #include "mesh/tree_mesh.hpp"
 #include "patches/acc.hpp"
 #include "patches/limit_reference.hpp"
+#include "mesh_support.hpp"
 #include "render_support.hpp"
 #include "test_support.hpp"
 
@@ -14,9 +15,7 @@ using namespace arbor;
 
 TEST_CASE("the tessellation shaders evaluate the ACC patches of the CPU reference", "[render][acc]") {
   REQUIRE(test::vulkan().features().vertexPipelineStoresAndAtomics);
-  GrowthOptions growth;
-  growth.levels = 2;
-  const TreeMesh tree = buildTreeMesh(generateSkeleton(test::loadPreset("quaking-aspen"), growth));
+  const TreeMesh tree = test::meshOf("quaking-aspen", 1, 2);
   const PatchSet patches = buildPatches(tree.mesh);
   render::RenderSession session(test::vulkan(), 96, 96, VK_SAMPLE_COUNT_1_BIT, test::barkImages().color,
                                 test::barkImages().height);

@@ -8,18 +8,13 @@
 #include "mesh/tree_mesh.hpp"
 #include "patches/limit_reference.hpp"
 #include "patches/patch_set.hpp"
+#include "mesh_support.hpp"
 #include "test_support.hpp"
 
 using namespace arbor;
+using test::meshOf;
 
 namespace {
-
-TreeMesh meshOf(const std::string& preset, std::uint64_t seed = 1, int levels = 0) {
-  GrowthOptions o;
-  o.seed = seed;
-  o.levels = levels;
-  return buildTreeMesh(generateSkeleton(test::loadPreset(preset), o));
-}
 
 // The ring of vertex c counter-clockwise from outside, starting at `from`, found from the faces alone.
 std::vector<std::uint32_t> independentRing(const QuadMesh& mesh, std::uint32_t c, std::uint32_t from) {

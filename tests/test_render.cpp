@@ -12,6 +12,7 @@
 #include "growth/weber_penn.hpp"
 #include "image/image_compare.hpp"
 #include "mesh/tree_mesh.hpp"
+#include "mesh_support.hpp"
 #include "render_support.hpp"
 #include "test_support.hpp"
 
@@ -60,9 +61,7 @@ const GoldenCase kCases[] = {
 };
 
 Image renderCase(const GoldenCase& c, render::FrameResult* frame = nullptr) {
-  GrowthOptions growth;
-  growth.levels = c.levels;
-  const TreeMesh tree = buildTreeMesh(generateSkeleton(test::loadPreset(c.preset), growth));
+  const TreeMesh tree = test::meshOf(c.preset, 1, c.levels);
   const PatchSet patches = buildPatches(tree.mesh);
   render::RenderSession session(test::vulkan(), kWidth, kHeight, VK_SAMPLE_COUNT_1_BIT, test::barkImages().color,
                                 test::barkImages().height);
@@ -115,9 +114,7 @@ TEST_CASE("golden images: every mode on three presets", "[render][golden]") {
 
 TEST_CASE("tessellation generates exactly the triangles its factor asks for", "[render]") {
   render::FrameResult frame;
-  GrowthOptions growth;
-  growth.levels = 1;
-  const TreeMesh tree = buildTreeMesh(generateSkeleton(test::loadPreset("black-tupelo"), growth));
+  const TreeMesh tree = test::meshOf("black-tupelo", 1, 1);
   for (float level : {1.0f, 3.0f, 16.0f, 64.0f}) {
     const GoldenCase c{"count", "black-tupelo", 1, render::RenderMode::ACC, level, 0, 0};
     renderCase(c, &frame);
@@ -137,9 +134,7 @@ TEST_CASE("tessellation generates exactly the triangles its factor asks for", "[
 TEST_CASE("the side of the trunk facing the sun is the bright one, in every mode", "[render]") {
   // Guards winding, culling and normal orientation together: with a wrong front face the far wall's inside is
   // drawn and the picture is lit from behind.
-  GrowthOptions growth;
-  growth.levels = 1;
-  const TreeMesh tree = buildTreeMesh(generateSkeleton(test::loadPreset("black-tupelo"), growth));
+  const TreeMesh tree = test::meshOf("black-tupelo", 1, 1);
   const PatchSet patches = buildPatches(tree.mesh);
   render::RenderSession session(test::vulkan(), 64, 96, VK_SAMPLE_COUNT_1_BIT, test::barkImages().color,
                                 test::barkImages().height);
@@ -174,9 +169,7 @@ TEST_CASE("the side of the trunk facing the sun is the bright one, in every mode
 
 TEST_CASE("splitting the tree into draws does not change the picture", "[render]") {
   // Lavapipe garbles draws beyond its limits (docs/rendering.md); the automatic split must match tiny draws.
-  GrowthOptions growth;
-  growth.levels = 3;
-  const TreeMesh tree = buildTreeMesh(generateSkeleton(test::loadPreset("quaking-aspen"), growth));
+  const TreeMesh tree = test::meshOf("quaking-aspen", 1, 3);
   const PatchSet patches = buildPatches(tree.mesh);
   REQUIRE(patches.size() > 20000);
   render::RenderSession session(test::vulkan(), 96, 128, VK_SAMPLE_COUNT_1_BIT, test::barkImages().color,
@@ -204,9 +197,7 @@ TEST_CASE("adaptive tessellation with displacement leaves no cracks between patc
   // Every point the evaluation stage emits on a patch's border must be emitted by the neighbour too (no
   // T-junction: both cut the shared edge alike) and be displaced to the same place (no gap). Near flip seams
   // the two sides read the texture mirrored, which the seam fade hides: there the gap is measured, not zero.
-  GrowthOptions growth;
-  growth.levels = 2;
-  const TreeMesh tree = buildTreeMesh(generateSkeleton(test::loadPreset("black-tupelo"), growth));
+  const TreeMesh tree = test::meshOf("black-tupelo", 1, 2);
   const PatchSet patches = buildPatches(tree.mesh);
   render::RenderSession session(test::vulkan(), 160, 200, VK_SAMPLE_COUNT_1_BIT, test::barkImages().color,
                                 test::barkImages().height);
