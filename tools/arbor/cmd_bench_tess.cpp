@@ -170,10 +170,7 @@ int runBenchTess(const BenchTessOptions& o) {
   if (hostTimed) {
     std::printf("\n* lavapipe: GPU timestamps miss its deferred rasterisation; triangles/s use the CPU frame time.\n");
   }
-  if (context.validationErrors() > 0) {
-    std::fprintf(stderr, "arbor: error: %u Vulkan validation errors (see above)\n", context.validationErrors());
-    return kExitFailure;
-  }
+  if (reportValidationErrors(context)) return kExitFailure;
   if (!o.csv.empty()) std::printf("wrote %s\n", o.csv.c_str());
   return 0;
 }

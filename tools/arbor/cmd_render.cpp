@@ -89,10 +89,7 @@ int runRender(const RenderOptions& o) {
     }
   }
   writePng(o.out, session.image());
-  if (context.validationErrors() > 0) {
-    std::fprintf(stderr, "arbor: error: %u Vulkan validation errors (see above)\n", context.validationErrors());
-    return kExitFailure;
-  }
+  if (reportValidationErrors(context)) return kExitFailure;
   if (o.quiet) return 0;
   std::sort(gpu.begin(), gpu.end());
   std::sort(cpu.begin(), cpu.end());

@@ -33,4 +33,10 @@ bool validationWanted(bool flag) {
 #endif
 }
 
+bool reportValidationErrors(const vk::VulkanContext& context) {
+  if (context.validationErrors() == 0) return false;
+  std::fprintf(stderr, "arbor: error: %u Vulkan validation errors (see above)\n", context.validationErrors());
+  return true;
+}
+
 }  // namespace arbor::cli

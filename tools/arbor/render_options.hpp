@@ -4,6 +4,7 @@
 #include <string>
 
 #include "render/renderer.hpp"
+#include "vk/context.hpp"
 
 namespace arbor::cli {
 
@@ -13,5 +14,7 @@ render::RenderMode parseMode(const std::string& mode, const std::string& field =
 void parseSize(const std::string& text, std::uint32_t& width, std::uint32_t& height);
 // On when asked for, when ARBOR_VALIDATION=1 (the tests set it), and always in debug builds.
 bool validationWanted(bool flag);
+// True (after saying how many on stderr) when the context's validation layer reported errors.
+bool reportValidationErrors(const vk::VulkanContext& context);
 
 }  // namespace arbor::cli
