@@ -14,6 +14,7 @@ layout(set = 0, binding = 0, std140) uniform Scene {
   vec4 ground;        // rgb, distance from the eye at which it has faded into the horizon (metres)
   uvec4 flags;        // x: capture evaluated points, y: wireframe colouring, z: back faces in magenta
   vec4 lens;          // x: pixels covered by one unit of length at unit distance
+  vec4 leafLod;       // distance (m) up to which all leaves show (0: no thinning), density, leaf count, shadow leaves
 } scene;
 
 struct TreeVertex {
@@ -29,6 +30,15 @@ layout(set = 0, binding = 2, std430) readonly buffer Patches { uvec4 patches[]; 
 layout(set = 0, binding = 3, std430) readonly buffer Points { uint points[]; };
 // Three vertex indices per triangle of the triangulated mesh (PN-triangles).
 layout(set = 0, binding = 7, std430) readonly buffer Triangles { uint triangleIndices[]; };
+
+struct Leaf {
+  vec4 positionLength;  // object space base of the blade, its length
+  vec4 directionWidth;  // unit vector base -> tip, half width
+  vec4 normalKind;      // blade normal, kind (atlas cell)
+};
+// In a random order, so that the first ones are a fair sample (thinning, self-shadowing).
+layout(set = 0, binding = 8, std430) readonly buffer Leaves { Leaf leaves[]; };
+layout(set = 0, binding = 9) uniform sampler2D leafAtlas;
 layout(set = 0, binding = 4) uniform sampler2D barkColor;
 layout(set = 0, binding = 5) uniform sampler2D barkHeight;
 

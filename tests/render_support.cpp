@@ -2,6 +2,10 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
+#include <sstream>
+
+#include "image/image_compare.hpp"
 
 namespace arbor::test {
 
@@ -30,9 +34,38 @@ vk::VulkanContext& vulkan() {
   return context;
 }
 
-const render::BarkImages& barkImages() {
-  static const render::BarkImages images = render::loadBarkImages(ARBOR_ASSET_DIR);
+const render::TreeTextures& textures() {
+  static const render::TreeTextures images = render::loadTreeTextures(ARBOR_ASSET_DIR);
   return images;
+}
+
+GoldenCheck checkGolden(const std::string& name, const Image& actual) {
+  namespace fs = std::filesystem;
+  constexpr int kPixelThreshold = 16;
+  constexpr double kMaxDifferingShare = 0.005;
+  constexpr double kMinPsnr = 38.0;
+  const fs::path golden = fs::path(ARBOR_SOURCE_DIR) / "tests" / "golden" / (name + ".png");
+  const char* bless = std::getenv("ARBOR_BLESS");
+  if (bless && std::string(bless) == "1") {
+    writePng(golden.string(), actual);
+    return {true, "blessed " + golden.string()};
+  }
+  if (!fs::exists(golden)) return {false, "no golden image " + golden.string() + " (bless with ARBOR_BLESS=1)"};
+  const Image expected = readPng(golden.string());
+  const ImageDifference d = compareImages(expected, actual, kPixelThreshold);
+  const double share = static_cast<double>(d.pixelsOverThreshold) / (static_cast<double>(actual.width) * actual.height);
+  std::ostringstream report;
+  report << name << ": max channel difference " << d.maxChannelDifference << ", PSNR " << d.psnr << " dB, "
+         << d.pixelsOverThreshold << " pixels over " << kPixelThreshold;
+  const bool ok = share <= kMaxDifferingShare && d.psnr >= kMinPsnr;
+  if (!ok) {
+    const fs::path outDir = fs::path(ARBOR_BINARY_DIR) / "test-output" / "golden";
+    fs::create_directories(outDir);
+    writePng((outDir / (name + ".png")).string(), actual);
+    writePng((outDir / (name + "-difference.png")).string(), differenceImage(expected, actual));
+    report << "; picture and difference in " << outDir.string();
+  }
+  return {ok, report.str()};
 }
 
 }  // namespace arbor::test

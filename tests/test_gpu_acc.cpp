@@ -17,8 +17,7 @@ TEST_CASE("the tessellation shaders evaluate the ACC patches of the CPU referenc
   REQUIRE(test::vulkan().features().vertexPipelineStoresAndAtomics);
   const TreeMesh tree = test::meshOf("quaking-aspen", 1, 2);
   const PatchSet patches = buildPatches(tree.mesh);
-  render::RenderSession session(test::vulkan(), 96, 96, VK_SAMPLE_COUNT_1_BIT, test::barkImages().color,
-                                test::barkImages().height);
+  render::RenderSession session(test::vulkan(), 96, 96, VK_SAMPLE_COUNT_1_BIT, test::textures());
   session.setTree(tree.mesh, patches);
   const float level = 3.0f;
   const auto perPatch = static_cast<std::uint32_t>((level + 1) * (level + 1));

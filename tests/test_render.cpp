@@ -5,8 +5,6 @@
 // A failing case writes its picture and an amplified difference image into <build>/test-output/golden/.
 #include <catch2/catch.hpp>
 #include <cmath>
-#include <cstdlib>
-#include <filesystem>
 #include <map>
 
 #include "growth/weber_penn.hpp"
@@ -17,14 +15,8 @@
 #include "test_support.hpp"
 
 using namespace arbor;
-namespace fs = std::filesystem;
 
 namespace {
-
-// Tolerance: lavapipe is bit-exact on one machine; another CPU's LLVM code may round a few pixels apart.
-constexpr int kPixelThreshold = 16;          // a pixel differs when a channel is off by more than 16/255
-constexpr double kMaxDifferingShare = 0.005; // ... and at most 0.5 % of the pixels may
-constexpr double kMinPsnr = 38.0;            // dB over the whole picture
 
 struct GoldenCase {
   const char* name;
@@ -63,8 +55,7 @@ const GoldenCase kCases[] = {
 Image renderCase(const GoldenCase& c, render::FrameResult* frame = nullptr) {
   const TreeMesh tree = test::meshOf(c.preset, 1, c.levels);
   const PatchSet patches = buildPatches(tree.mesh);
-  render::RenderSession session(test::vulkan(), kWidth, kHeight, VK_SAMPLE_COUNT_1_BIT, test::barkImages().color,
-                                test::barkImages().height);
+  render::RenderSession session(test::vulkan(), kWidth, kHeight, VK_SAMPLE_COUNT_1_BIT, test::textures());
   session.setTree(tree.mesh, patches);
   render::RenderSettings settings;
   settings.mode = c.mode;
@@ -82,33 +73,14 @@ Image renderCase(const GoldenCase& c, render::FrameResult* frame = nullptr) {
 }  // namespace
 
 TEST_CASE("golden images: every mode on three presets", "[render][golden]") {
-  const bool bless = std::getenv("ARBOR_BLESS") && std::string(std::getenv("ARBOR_BLESS")) == "1";
-  const fs::path goldenDir = fs::path(ARBOR_SOURCE_DIR) / "tests" / "golden";
-  const fs::path outDir = fs::path(ARBOR_BINARY_DIR) / "test-output" / "golden";
   for (const GoldenCase& c : kCases) {
     INFO(c.name);
     const std::uint32_t errorsBefore = test::vulkan().validationErrors();
     const Image actual = renderCase(c);
     CHECK(test::vulkan().validationErrors() == errorsBefore);
-    const fs::path golden = goldenDir / (std::string(c.name) + ".png");
-    if (bless) {
-      writePng(golden.string(), actual);
-      WARN("blessed " << golden);
-      continue;
-    }
-    REQUIRE(fs::exists(golden));
-    const Image expected = readPng(golden.string());
-    const ImageDifference d = compareImages(expected, actual, kPixelThreshold);
-    const double share = static_cast<double>(d.pixelsOverThreshold) / (static_cast<double>(kWidth) * kHeight);
-    INFO("max channel difference " << d.maxChannelDifference << ", PSNR " << d.psnr << " dB, " << d.pixelsOverThreshold
-                                   << " pixels over " << kPixelThreshold);
-    const bool ok = share <= kMaxDifferingShare && d.psnr >= kMinPsnr;
-    if (!ok) {
-      fs::create_directories(outDir);
-      writePng((outDir / (std::string(c.name) + ".png")).string(), actual);
-      writePng((outDir / (std::string(c.name) + "-difference.png")).string(), differenceImage(expected, actual));
-    }
-    CHECK(ok);
+    const test::GoldenCheck golden = test::checkGolden(c.name, actual);
+    INFO(golden.report);
+    CHECK(golden.ok);
   }
 }
 
@@ -136,8 +108,7 @@ TEST_CASE("the side of the trunk facing the sun is the bright one, in every mode
   // drawn and the picture is lit from behind.
   const TreeMesh tree = test::meshOf("black-tupelo", 1, 1);
   const PatchSet patches = buildPatches(tree.mesh);
-  render::RenderSession session(test::vulkan(), 64, 96, VK_SAMPLE_COUNT_1_BIT, test::barkImages().color,
-                                test::barkImages().height);
+  render::RenderSession session(test::vulkan(), 64, 96, VK_SAMPLE_COUNT_1_BIT, test::textures());
   session.setTree(tree.mesh, patches);
   const float azimuth = 25.0f;
   const render::Camera camera = render::frameBounds(render::plantedBounds(*session.tree()), azimuth, 6.0f, 64.0f / 96.0f);
@@ -172,8 +143,7 @@ TEST_CASE("splitting the tree into draws does not change the picture", "[render]
   const TreeMesh tree = test::meshOf("quaking-aspen", 1, 3);
   const PatchSet patches = buildPatches(tree.mesh);
   REQUIRE(patches.size() > 20000);
-  render::RenderSession session(test::vulkan(), 96, 128, VK_SAMPLE_COUNT_1_BIT, test::barkImages().color,
-                                test::barkImages().height);
+  render::RenderSession session(test::vulkan(), 96, 128, VK_SAMPLE_COUNT_1_BIT, test::textures());
   session.setTree(tree.mesh, patches);
   const render::Camera camera = render::frameBounds(render::plantedBounds(*session.tree()), 25.0f, 6.0f, 96.0f / 128.0f);
   for (render::RenderMode mode : {render::RenderMode::PN, render::RenderMode::ACC}) {
@@ -199,8 +169,7 @@ TEST_CASE("adaptive tessellation with displacement leaves no cracks between patc
   // the two sides read the texture mirrored, which the seam fade hides: there the gap is measured, not zero.
   const TreeMesh tree = test::meshOf("black-tupelo", 1, 2);
   const PatchSet patches = buildPatches(tree.mesh);
-  render::RenderSession session(test::vulkan(), 160, 200, VK_SAMPLE_COUNT_1_BIT, test::barkImages().color,
-                                test::barkImages().height);
+  render::RenderSession session(test::vulkan(), 160, 200, VK_SAMPLE_COUNT_1_BIT, test::textures());
   session.setTree(tree.mesh, patches);
   session.renderer().setCapture(2000000);
   render::RenderSettings settings;

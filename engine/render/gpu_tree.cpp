@@ -1,6 +1,7 @@
 #include "gpu_tree.hpp"
 
 #include <algorithm>
+#include <random>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/vec4.hpp>
@@ -17,6 +18,10 @@ struct GpuVertex {
   glm::vec4 uvw;
 };
 
+struct GpuLeaf {
+  glm::vec4 positionLength, directionWidth, normalKind;
+};
+
 std::uint32_t pack(const std::array<std::uint8_t, 4>& bytes) {
   return static_cast<std::uint32_t>(bytes[0]) | (static_cast<std::uint32_t>(bytes[1]) << 8) |
          (static_cast<std::uint32_t>(bytes[2]) << 16) | (static_cast<std::uint32_t>(bytes[3]) << 24);
@@ -24,7 +29,8 @@ std::uint32_t pack(const std::array<std::uint8_t, 4>& bytes) {
 
 }  // namespace
 
-GpuTree uploadTree(const vk::VulkanContext& context, const QuadMesh& mesh, const PatchSet& patches) {
+GpuTree uploadTree(const vk::VulkanContext& context, const QuadMesh& mesh, const PatchSet& patches,
+                   const std::vector<Leaf>& leaves) {
   std::vector<GpuVertex> vertices(mesh.vertexCount());
   for (std::size_t i = 0; i < vertices.size(); ++i) {
     vertices[i] = {glm::vec4(mesh.positions[i], mesh.radius[i]), glm::vec4(mesh.normals[i], mesh.level[i]),
@@ -48,7 +54,23 @@ GpuTree uploadTree(const vk::VulkanContext& context, const QuadMesh& mesh, const
   tree.points = vk::uploadBuffer(context, patches.points.data(), patches.points.size() * sizeof(std::uint32_t), storage);
   tree.triangles = static_cast<std::uint32_t>(triangles.size());
   tree.patchCount = static_cast<std::uint32_t>(patches.size());
-  tree.bytes = tree.vertices.size() + tree.indices.size() + tree.patches.size() + tree.points.size();
+  // Leaves in a random order (Nystad 6.5): thinning and self-shadowing take prefixes of it.
+  std::vector<GpuLeaf> leafRecords;
+  leafRecords.reserve(leaves.size());
+  for (const Leaf& l : leaves) {
+    leafRecords.push_back({glm::vec4(glm::vec3(l.position), static_cast<float>(l.length)),
+                           glm::vec4(glm::normalize(glm::vec3(l.direction)), static_cast<float>(0.5 * l.width)),
+                           glm::vec4(glm::normalize(glm::vec3(l.normal)), static_cast<float>(l.kind))});
+  }
+  std::mt19937 shuffle(0x1eaf5eedu);
+  for (std::size_t i = leafRecords.size(); i > 1; --i) {
+    std::swap(leafRecords[i - 1], leafRecords[std::uniform_int_distribution<std::size_t>(0, i - 1)(shuffle)]);
+  }
+  tree.leafCount = static_cast<std::uint32_t>(leafRecords.size());
+  if (!leafRecords.empty()) {
+    tree.leaves = vk::uploadBuffer(context, leafRecords.data(), leafRecords.size() * sizeof(GpuLeaf), storage);
+  }
+  tree.bytes = tree.vertices.size() + tree.indices.size() + tree.patches.size() + tree.points.size() + tree.leaves.size();
   tree.bounds = meshBounds(mesh);
   // Planted so that the limit surface is at full width at the ground: the closed base's corners (limit
   // positions) are pulled up and in, and the rounding reaches about half a radius above them.

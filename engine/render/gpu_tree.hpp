@@ -2,6 +2,7 @@
 // A tree on the GPU: its vertices (also read by the ACC control shader), triangle indices (flat, PN) and
 // patches with their control point indices (ACC).
 #include "camera.hpp"
+#include "growth/skeleton.hpp"
 #include "mesh/quad_mesh.hpp"
 #include "patches/patch_set.hpp"
 #include "vk/buffer.hpp"
@@ -13,6 +14,8 @@ struct GpuTree {
   vk::Buffer indices;    // triangles, three per quad pair
   vk::Buffer patches;    // per patch: point offset, valences, prefixes, kind
   vk::Buffer points;     // control point vertex indices
+  vk::Buffer leaves;     // per leaf: base + length, direction + half width, normal + kind; in random order
+  std::uint32_t leafCount = 0;
   std::uint32_t triangles = 0, patchCount = 0;
   std::uint32_t regular = 0, extraordinary = 0, fallback = 0;
   std::size_t bytes = 0;  // all buffers together
@@ -25,6 +28,8 @@ glm::mat4 plantedModel(const GpuTree& tree);
 // The world-space bounds of the planted tree.
 Bounds plantedBounds(const GpuTree& tree);
 
-GpuTree uploadTree(const vk::VulkanContext& context, const QuadMesh& mesh, const PatchSet& patches);
+// `leaves` (the skeleton's) are shuffled with a fixed seed, so any prefix of them is a fair sample of the crown.
+GpuTree uploadTree(const vk::VulkanContext& context, const QuadMesh& mesh, const PatchSet& patches,
+                   const std::vector<Leaf>& leaves = {});
 
 }  // namespace arbor::render

@@ -9,6 +9,9 @@
 #include "spirv_flat_vert.h"
 #include "spirv_ground_frag.h"
 #include "spirv_ground_vert.h"
+#include "spirv_leaf_frag.h"
+#include "spirv_leaf_geom.h"
+#include "spirv_leaf_vert.h"
 #include "spirv_pn_tesc.h"
 #include "spirv_pn_tese.h"
 #include "spirv_pn_vert.h"
@@ -96,7 +99,6 @@ VkPipeline build(VkDevice device, VkRenderPass renderPass, VkPipelineLayout layo
   VkPipelineRasterizationStateCreateInfo raster{VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
   raster.polygonMode = spec.wireframe ? VK_POLYGON_MODE_LINE : VK_POLYGON_MODE_FILL;
   raster.cullMode = spec.cullBack ? VK_CULL_MODE_BACK_BIT : VK_CULL_MODE_NONE;
-  // Faces are counter-clockwise from outside; the projection's y flip makes them clockwise on screen.
   raster.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;  // outward CCW faces; the projection flips y, keeping the winding
   raster.lineWidth = 1.0f;
   if (spec.wireframe) {
@@ -145,7 +147,7 @@ VkPipeline build(VkDevice device, VkRenderPass renderPass, VkPipelineLayout layo
 
 void Pipelines::destroy(VkDevice device) {
   for (VkPipeline p : {sky, ground, tree[0], tree[1], tree[2], wireframe[0], wireframe[1], wireframe[2], twoSided[0],
-                       twoSided[1], twoSided[2]}) {
+                       twoSided[1], twoSided[2], leaves}) {
     if (p) vkDestroyPipeline(device, p, nullptr);
   }
   if (layout) vkDestroyPipelineLayout(device, layout, nullptr);
@@ -156,10 +158,13 @@ void Pipelines::destroy(VkDevice device) {
 Pipelines createPipelines(const vk::VulkanContext& context, VkRenderPass renderPass, VkSampleCountFlagBits samples) {
   const VkDevice device = context.device();
   Pipelines p;
+  const bool geometry = context.features().geometryShader == VK_TRUE;  // leaves need it
   const VkShaderStageFlags all = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT |
-                                 VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
+                                 VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT | VK_SHADER_STAGE_FRAGMENT_BIT |
+                                 (geometry ? VkShaderStageFlags{VK_SHADER_STAGE_GEOMETRY_BIT} : VkShaderStageFlags{0});
+  p.pushStages = all;
   const VkShaderStageFlags tess = VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT | VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT;
-  const std::array<VkDescriptorSetLayoutBinding, 8> bindings{{
+  const std::array<VkDescriptorSetLayoutBinding, 10> bindings{{
       {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, all, nullptr},
       {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, all, nullptr},
       {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, tess, nullptr},
@@ -168,6 +173,8 @@ Pipelines createPipelines(const vk::VulkanContext& context, VkRenderPass renderP
       {5, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, all, nullptr},
       {6, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, nullptr},
       {7, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, nullptr},
+      {8, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, all, nullptr},
+      {9, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
   }};
   VkDescriptorSetLayoutCreateInfo setInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
   setInfo.bindingCount = static_cast<std::uint32_t>(bindings.size());
@@ -210,6 +217,13 @@ Pipelines createPipelines(const vk::VulkanContext& context, VkRenderPass renderP
       wire.cullBack = false;
       p.wireframe[m] = build(device, renderPass, p.layout, samples, wire);
     }
+  }
+  if (geometry) {
+    PipelineSpec leaves{{stage(VK_SHADER_STAGE_VERTEX_BIT, spirv_leaf_vert), stage(VK_SHADER_STAGE_GEOMETRY_BIT, spirv_leaf_geom),
+                         stage(VK_SHADER_STAGE_FRAGMENT_BIT, spirv_leaf_frag)}};
+    leaves.topology = VK_PRIMITIVE_TOPOLOGY_POINT_LIST;
+    leaves.cullBack = false;  // a leaf is seen from both sides
+    p.leaves = build(device, renderPass, p.layout, samples, leaves);
   }
   return p;
 }

@@ -15,6 +15,8 @@ struct Pipelines {
   VkPipeline tree[3] = {};       // by RenderMode
   VkPipeline wireframe[3] = {};  // null where the device has no fillModeNonSolid
   VkPipeline twoSided[3] = {};   // no culling: back faces seen through cracks show (crack tests)
+  VkPipeline leaves = VK_NULL_HANDLE;  // null where the device has no geometry shaders
+  VkShaderStageFlags pushStages = 0;   // every stage the layout's push constants and bindings reach
 
   void destroy(VkDevice device);
 };

@@ -5,14 +5,14 @@
 namespace arbor::render {
 
 RenderSession::RenderSession(const vk::VulkanContext& context, std::uint32_t width, std::uint32_t height,
-                             VkSampleCountFlagBits samples, const Image& barkColor, const Image& barkHeight)
+                             VkSampleCountFlagBits samples, const TreeTextures& textures)
     : context_(context),
       target_(context, width, height, samples),
-      renderer_(context, target_.renderPass(), samples, barkColor, barkHeight) {}
+      renderer_(context, target_.renderPass(), samples, textures) {}
 
-void RenderSession::setTree(const QuadMesh& mesh, const PatchSet& patches) {
+void RenderSession::setTree(const QuadMesh& mesh, const PatchSet& patches, const std::vector<Leaf>& leaves) {
   renderer_.setTree(nullptr);
-  tree_ = std::make_unique<GpuTree>(uploadTree(context_, mesh, patches));
+  tree_ = std::make_unique<GpuTree>(uploadTree(context_, mesh, patches, leaves));
   renderer_.setTree(tree_.get());
 }
 
@@ -40,8 +40,9 @@ FrameResult RenderSession::render(const Camera& camera, const RenderSettings& se
   return result;
 }
 
-BarkImages loadBarkImages(const std::string& assetDirectory) {
-  return BarkImages{readPng(assetDirectory + "/textures/bark_color.png"), readPng(assetDirectory + "/textures/bark_height.png")};
+TreeTextures loadTreeTextures(const std::string& assetDirectory) {
+  const std::string dir = assetDirectory + "/textures/";
+  return TreeTextures{readPng(dir + "bark_color.png"), readPng(dir + "bark_height.png"), readPng(dir + "leaf_atlas.png")};
 }
 
 }  // namespace arbor::render

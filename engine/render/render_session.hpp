@@ -16,9 +16,9 @@ struct FrameResult {
 class RenderSession {
  public:
   RenderSession(const vk::VulkanContext& context, std::uint32_t width, std::uint32_t height, VkSampleCountFlagBits samples,
-                const Image& barkColor, const Image& barkHeight);
+                const TreeTextures& textures);
 
-  void setTree(const QuadMesh& mesh, const PatchSet& patches);
+  void setTree(const QuadMesh& mesh, const PatchSet& patches, const std::vector<Leaf>& leaves = {});
   const GpuTree* tree() const { return tree_.get(); }
   FrameResult render(const Camera& camera, const RenderSettings& settings);
   Image image() const { return target_.readback(); }
@@ -32,10 +32,7 @@ class RenderSession {
   std::unique_ptr<GpuTree> tree_;
 };
 
-// The project's bark textures from assets/textures (made by `arbor textures`).
-struct BarkImages {
-  Image color, height;
-};
-BarkImages loadBarkImages(const std::string& assetDirectory);
+// The project's textures from assets/textures (made by `arbor textures`).
+TreeTextures loadTreeTextures(const std::string& assetDirectory);
 
 }  // namespace arbor::render

@@ -25,6 +25,7 @@ struct SceneUniforms {
   glm::vec4 ground;
   glm::uvec4 flags;
   glm::vec4 lens;
+  glm::vec4 leafLod;
 };
 
 constexpr std::uint32_t kCaptureHeader = 16;  // count, capacity, two words of padding
@@ -43,21 +44,26 @@ std::uint32_t verticesPerPatch(RenderMode mode, float level) {
 }  // namespace
 
 TreeRenderer::TreeRenderer(const vk::VulkanContext& context, VkRenderPass renderPass, VkSampleCountFlagBits samples,
-                           const Image& barkColor, const Image& barkHeight)
+                           const TreeTextures& textures)
     : context_(context) {
   pipelines_ = createPipelines(context, renderPass, samples);
-  barkColor_ = vk::uploadTexture(context, barkColor.rgba, static_cast<std::uint32_t>(barkColor.width),
-                                 static_cast<std::uint32_t>(barkColor.height), true);
-  barkHeight_ = vk::uploadTexture(context, barkHeight.rgba, static_cast<std::uint32_t>(barkHeight.width),
-                                  static_cast<std::uint32_t>(barkHeight.height), false);
+  const auto upload = [&context](const Image& image, bool srgb) {
+    return vk::uploadTexture(context, image.rgba, static_cast<std::uint32_t>(image.width), static_cast<std::uint32_t>(image.height), srgb);
+  };
+  barkColor_ = upload(textures.barkColor, true);
+  barkHeight_ = upload(textures.barkHeight, false);
+  leafAtlas_ = upload(textures.leafAtlas, true);
   sampler_ = vk::createRepeatSampler(context, static_cast<float>(barkColor_.mipLevels()));
+  // Coarse MIP levels average a cutout's alpha below the leaf shader's test and whole leaves would vanish with
+  // distance: the atlas stops at the level where the blades still hold their shape.
+  leafSampler_ = vk::createRepeatSampler(context, 3.0f, false);  // clamped + anisotropic: lavapipe minutes/frame
   scene_ = vk::hostBuffer(context, sizeof(SceneUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
   setCapture(0);
 
   const VkDevice device = context.device();
   const std::array<VkDescriptorPoolSize, 3> sizes{{{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1},
-                                                   {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 5},
-                                                   {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 2}}};
+                                                   {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 6},
+                                                   {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 3}}};
   VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
   poolInfo.maxSets = 1;
   poolInfo.poolSizeCount = static_cast<std::uint32_t>(sizes.size());
@@ -92,6 +98,7 @@ TreeRenderer::~TreeRenderer() {
   if (timestamps_) vkDestroyQueryPool(device, timestamps_, nullptr);
   vkDestroyDescriptorPool(device, pool_, nullptr);
   vkDestroySampler(device, sampler_, nullptr);
+  vkDestroySampler(device, leafSampler_, nullptr);
   pipelines_.destroy(device);
 }
 
@@ -126,6 +133,8 @@ void TreeRenderer::setTree(const GpuTree* tree) {
   const VkDescriptorBufferInfo patchInfo{tree ? tree->patches.handle() : fallback, 0, VK_WHOLE_SIZE};
   const VkDescriptorBufferInfo pointInfo{tree ? tree->points.handle() : fallback, 0, VK_WHOLE_SIZE};
   const VkDescriptorBufferInfo indexInfo{tree ? tree->indices.handle() : fallback, 0, VK_WHOLE_SIZE};
+  const VkDescriptorBufferInfo leafInfo{tree && tree->leafCount > 0 ? tree->leaves.handle() : fallback, 0, VK_WHOLE_SIZE};
+  const VkDescriptorImageInfo atlasInfo{leafSampler_, leafAtlas_.view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
   const VkDescriptorBufferInfo captureInfo{capture_.handle(), 0, VK_WHOLE_SIZE};
   const VkDescriptorImageInfo colorInfo{sampler_, barkColor_.view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
   const VkDescriptorImageInfo heightInfo{sampler_, barkHeight_.view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
@@ -139,7 +148,7 @@ void TreeRenderer::setTree(const GpuTree* tree) {
     w.pImageInfo = i;
     return w;
   };
-  const std::array<VkWriteDescriptorSet, 8> writes{
+  const std::array<VkWriteDescriptorSet, 10> writes{
       write(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, &sceneInfo, nullptr),
       write(1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &vertexInfo, nullptr),
       write(2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &patchInfo, nullptr),
@@ -147,7 +156,9 @@ void TreeRenderer::setTree(const GpuTree* tree) {
       write(4, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, nullptr, &colorInfo),
       write(5, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, nullptr, &heightInfo),
       write(6, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &captureInfo, nullptr),
-      write(7, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &indexInfo, nullptr)};
+      write(7, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &indexInfo, nullptr),
+      write(8, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &leafInfo, nullptr),
+      write(9, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, nullptr, &atlasInfo)};
   vkUpdateDescriptorSets(context_.device(), static_cast<std::uint32_t>(writes.size()), writes.data(), 0, nullptr);
 }
 
@@ -180,6 +191,8 @@ void TreeRenderer::beginFrame(VkCommandBuffer cmd, const Camera& camera, VkExten
   const float groundRadius = tree_ ? std::clamp(10.0f * glm::length(tree_->bounds.hi - tree_->bounds.lo), 60.0f, 400.0f) : 100.0f;
   u.ground = glm::vec4(0.30f, 0.36f, 0.20f, groundRadius);
   u.flags = glm::uvec4(captureCapacity_ > 0 ? 1u : 0u, 0u, s.revealBackFaces ? 1u : 0u, 0u);
+  u.leafLod = glm::vec4(s.leafLodDistance, std::clamp(s.leafDensity, 0.0f, 1.0f),
+                        static_cast<float>(tree_ ? tree_->leafCount : 0u), static_cast<float>(s.shadowLeaves));
   u.lens = glm::vec4(0.5f * static_cast<float>(extent.height) / std::tan(0.5f * camera.fovY), 0.0f, 0.0f, 0.0f);
   std::memcpy(scene_.mapped(), &u, sizeof u);
   if (captureCapacity_ > 0) static_cast<std::uint32_t*>(capture_.mapped())[0] = 0;
@@ -195,8 +208,7 @@ void TreeRenderer::draw(VkCommandBuffer cmd, VkExtent2D extent, const RenderSett
   vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.layout, 0, 1, &set_, 0, nullptr);
   DrawConstants constants{};
   std::memcpy(constants.model, glm::value_ptr(model), sizeof constants.model);
-  const VkShaderStageFlags stages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT |
-                                    VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
+  const VkShaderStageFlags stages = pipelines_.pushStages;
   vkCmdPushConstants(cmd, pipelines_.layout, stages, 0, sizeof constants, &constants);
 
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.sky);
@@ -234,6 +246,13 @@ void TreeRenderer::draw(VkCommandBuffer cmd, VkExtent2D extent, const RenderSett
     }
   };
   drawTree(s.revealBackFaces ? pipelines_.twoSided[mode] : pipelines_.tree[mode]);
+  if (s.leaves && tree_->leafCount > 0 && pipelines_.leaves) {
+    constants.patchBase = 0;
+    vkCmdPushConstants(cmd, pipelines_.layout, stages, 0, sizeof constants, &constants);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.leaves);
+    vkCmdDraw(cmd, tree_->leafCount, 1, 0, 0);
+    ++lastDraws_;
+  }
   if (statistics_) vkCmdEndQuery(cmd, statistics_, 0);
   if (timestamps_) vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, timestamps_, 1);
   if (s.wireframe && pipelines_.wireframe[mode]) drawTree(pipelines_.wireframe[mode]);

@@ -12,6 +12,11 @@
 
 namespace arbor::render {
 
+// The renderer's textures: bark colour and height (tileable), the leaf atlas.
+struct TreeTextures {
+  Image barkColor, barkHeight, leafAtlas;
+};
+
 struct RenderSettings {
   RenderMode mode = RenderMode::ACC;
   float tessLevel = 8.0f;        // uniform tessellation factor (1..64)
@@ -24,6 +29,10 @@ struct RenderSettings {
   bool wireframe = false;        // outline the tessellated triangles over the surface
   bool ground = true;
   bool cull = true;              // skip patches outside the view
+  bool leaves = false;            // draw the leaves (needs geometry shaders)
+  float leafDensity = 1.0f;       // share of the leaves drawn (0..1), the first of the random order
+  float leafLodDistance = 0.0f;   // > 0: all leaves up to this distance (m), then thinning with distance squared
+  std::uint32_t shadowLeaves = 0; // self-shadowing: each leaf tests the first this many leaves
   bool revealBackFaces = false;  // draw back faces too, in magenta: on a closed surface any that shows is a crack
   std::uint32_t patchesPerDraw = 0;  // > 0: split tree draws into this many patches (tests); 0: what the driver needs
   glm::vec3 lightDirection{0.45f, -0.6f, 0.75f};
@@ -49,12 +58,13 @@ struct CapturedPoint {
 class TreeRenderer {
  public:
   TreeRenderer(const vk::VulkanContext& context, VkRenderPass renderPass, VkSampleCountFlagBits samples,
-               const Image& barkColor, const Image& barkHeight);
+               const TreeTextures& textures);
   ~TreeRenderer();
   TreeRenderer(const TreeRenderer&) = delete;
   TreeRenderer& operator=(const TreeRenderer&) = delete;
 
   void setTree(const GpuTree* tree);
+  bool drawsLeaves() const { return pipelines_.leaves != VK_NULL_HANDLE; }
   // Captures up to `capacity` evaluated ACC points in the next frames (0 turns it off).
   void setCapture(std::uint32_t capacity);
   std::vector<CapturedPoint> captured() const;
@@ -72,8 +82,8 @@ class TreeRenderer {
  private:
   const vk::VulkanContext& context_;
   Pipelines pipelines_;
-  vk::GpuImage barkColor_, barkHeight_;
-  VkSampler sampler_ = VK_NULL_HANDLE;
+  vk::GpuImage barkColor_, barkHeight_, leafAtlas_;
+  VkSampler sampler_ = VK_NULL_HANDLE, leafSampler_ = VK_NULL_HANDLE;
   vk::Buffer scene_;
   vk::Buffer capture_;
   std::uint32_t captureCapacity_ = 0;

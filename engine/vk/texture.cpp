@@ -136,15 +136,16 @@ GpuImage uploadTexture(const VulkanContext& context, const std::vector<std::uint
   return image;
 }
 
-VkSampler createRepeatSampler(const VulkanContext& context, float maxLod) {
+VkSampler createRepeatSampler(const VulkanContext& context, float maxLod, bool anisotropic) {
   VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
   info.magFilter = VK_FILTER_LINEAR;
   info.minFilter = VK_FILTER_LINEAR;
   info.mipmapMode = VK_SAMPLER_MIPMAP_MODE_LINEAR;
   info.addressModeU = info.addressModeV = info.addressModeW = VK_SAMPLER_ADDRESS_MODE_REPEAT;
   info.maxLod = maxLod;
-  info.anisotropyEnable = context.features().samplerAnisotropy;
-  info.maxAnisotropy = context.features().samplerAnisotropy ? std::min(8.0f, context.properties().limits.maxSamplerAnisotropy) : 1.0f;
+  const bool useAnisotropy = anisotropic && context.features().samplerAnisotropy;
+  info.anisotropyEnable = useAnisotropy;
+  info.maxAnisotropy = useAnisotropy ? std::min(8.0f, context.properties().limits.maxSamplerAnisotropy) : 1.0f;
   VkSampler sampler = VK_NULL_HANDLE;
   check(vkCreateSampler(context.device(), &info, nullptr, &sampler), "vkCreateSampler");
   return sampler;

@@ -127,8 +127,8 @@ int runBenchTess(const BenchTessOptions& o) {
   contextOptions.validation = validationWanted(o.validation);
   contextOptions.device = o.device;
   vk::VulkanContext context(contextOptions);
-  const auto bark = render::loadBarkImages(assetDirectory());
-  render::RenderSession session(context, width, height, VK_SAMPLE_COUNT_1_BIT, bark.color, bark.height);
+  const auto textures = render::loadTreeTextures(assetDirectory());
+  render::RenderSession session(context, width, height, VK_SAMPLE_COUNT_1_BIT, textures);
   session.setTree(tree.mesh, patches);
   const render::Camera camera = render::frameBounds(render::plantedBounds(*session.tree()), 25.0f, 6.0f,
                                                     static_cast<float>(width) / static_cast<float>(height));

@@ -1,6 +1,7 @@
 // arbor render: a tree rendered offscreen with the tessellation pipelines, written as PNG, with the frame
 // time and the number of triangles the GPU generated.
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
@@ -36,8 +37,25 @@ struct RenderOptions {
   bool validation = false;
   bool wireframe = false;
   bool noGround = false;
+  bool leaves = false;
+  float leafDensity = 1.0f;
+  float leafLod = 0.0f;
+  int shadowLeaves = 0;
+  std::string light;
   bool quiet = false;
 };
+
+// "azimuth,elevation" in degrees -> a unit vector towards the sun (azimuth measured like the camera's).
+glm::vec3 parseLight(const std::string& text) {
+  float az = 0.0f, el = 0.0f;
+  char comma = 0, rest = 0;
+  if (std::sscanf(text.c_str(), "%f%c%f%c", &az, &comma, &el, &rest) != 3 || comma != ',' || !(el >= -90.0f && el <= 90.0f) ||
+      !std::isfinite(az)) {
+    throw SpeciesError(text, "--light", "expected AZIMUTH,ELEVATION in degrees, elevation from -90 to 90, e.g. 30,45");
+  }
+  const float a = glm::radians(az), e = glm::radians(el);
+  return {std::sin(a) * std::cos(e), -std::cos(a) * std::cos(e), std::sin(e)};
+}
 
 int runRender(const RenderOptions& o) {
   render::RenderSettings settings;
@@ -47,6 +65,11 @@ int runRender(const RenderOptions& o) {
   settings.displacement = o.displace;
   settings.wireframe = o.wireframe;
   settings.ground = !o.noGround;
+  settings.leaves = o.leaves;
+  settings.leafDensity = o.leafDensity;
+  settings.leafLodDistance = o.leafLod;
+  settings.shadowLeaves = static_cast<std::uint32_t>(o.shadowLeaves);
+  if (!o.light.empty()) settings.lightDirection = parseLight(o.light);
   std::uint32_t width = 0, height = 0;
   parseSize(o.size, width, height);
   if (!endsWith(o.out, ".png")) throw SpeciesError(o.out, "--out", "the picture is written as PNG; use a .png name");
@@ -55,17 +78,21 @@ int runRender(const RenderOptions& o) {
   GrowthOptions growth;
   growth.seed = o.seed;
   growth.levels = o.levels;
-  const TreeMesh tree = buildTreeMesh(generateSkeleton(params, growth));
+  const Skeleton skeleton = generateSkeleton(params, growth);
+  const TreeMesh tree = buildTreeMesh(skeleton);
   const PatchSet patches = buildPatches(tree.mesh);
 
   vk::ContextOptions contextOptions;
   contextOptions.validation = validationWanted(o.validation);
   contextOptions.device = o.device;
   vk::VulkanContext context(contextOptions);
-  const auto bark = render::loadBarkImages(assetDirectory());
+  const auto textures = render::loadTreeTextures(assetDirectory());
   const auto samples = static_cast<VkSampleCountFlagBits>(o.msaa);
-  render::RenderSession session(context, width, height, samples, bark.color, bark.height);
-  session.setTree(tree.mesh, patches);
+  render::RenderSession session(context, width, height, samples, textures);
+  session.setTree(tree.mesh, patches, skeleton.leaves);
+  if (o.leaves && !session.renderer().drawsLeaves()) {
+    throw std::runtime_error("--leaves: this Vulkan device has no geometry shaders, which the leaves need");
+  }
 
   render::Camera camera;
   const float aspect = static_cast<float>(width) / static_cast<float>(height);
@@ -139,6 +166,15 @@ void addRenderCommand(CLI::App& app, Action& action) {
   cmd->add_flag("--validation", o->validation, "Enable the Khronos validation layer (also ARBOR_VALIDATION=1); errors fail the run");
   cmd->add_flag("--wireframe", o->wireframe, "Outline the tessellated triangles");
   cmd->add_flag("--no-ground", o->noGround, "Leave out the ground");
+  cmd->add_flag("--leaves", o->leaves, "Draw the leaves (textured quads from the leaf atlas, back-lit, self-shadowed)");
+  cmd->add_option("--leaf-density", o->leafDensity, "Share of the leaves drawn, 0 to 1")->check(CLI::Range(0.0f, 1.0f))->capture_default_str();
+  cmd->add_option("--leaf-lod", o->leafLod, "All leaves up to this distance in metres, then fewer with distance squared (0: all)")
+      ->check(CLI::Range(0.0f, 10000.0f))
+      ->capture_default_str();
+  cmd->add_option("--shadow-leaves", o->shadowLeaves, "Self-shadowing: each leaf tests this many others (0: off)")
+      ->check(CLI::Range(0, 4096))
+      ->capture_default_str();
+  cmd->add_option("--light", o->light, "Sun direction as AZIMUTH,ELEVATION in degrees (azimuth 0: from -y, the default camera's side)");
   cmd->add_option("--out", o->out, "Output PNG")->required();
   cmd->add_flag("--quiet", o->quiet, "Print nothing on success");
   cmd->callback([o, &action] { action = [o] { return runRender(*o); }; });

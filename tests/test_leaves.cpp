@@ -1,0 +1,154 @@
+// Leaves on lavapipe: one quad per leaf, density and distance thinning, back-lighting, self-shadowing, goldens.
+#include <catch2/catch.hpp>
+#include <cmath>
+
+#include "growth/weber_penn.hpp"
+#include "image/image_compare.hpp"
+#include "mesh/tree_mesh.hpp"
+#include "render_support.hpp"
+#include "test_support.hpp"
+
+using namespace arbor;
+
+namespace {
+
+struct LeafScene {
+  Skeleton skeleton;
+  TreeMesh tree;
+  PatchSet patches;
+  render::RenderSession session;
+
+  LeafScene(const char* preset, int levels, std::uint32_t width, std::uint32_t height)
+      : skeleton(generateSkeleton(test::loadPreset(preset), [levels] {
+          GrowthOptions g;
+          g.levels = levels;
+          return g;
+        }())),
+        tree(buildTreeMesh(skeleton)),
+        patches(buildPatches(tree.mesh)),
+        session(test::vulkan(), width, height, VK_SAMPLE_COUNT_1_BIT, test::textures()) {
+    session.setTree(tree.mesh, patches, skeleton.leaves);
+  }
+
+  render::Camera framed(float aspect) const { return render::frameBounds(render::plantedBounds(*session.tree()), 25.0f, 6.0f, aspect); }
+};
+
+// A sun at (azimuth, elevation) in degrees, azimuth measured like the framing camera's.
+glm::vec3 sun(float azimuth, float elevation) {
+  const float a = glm::radians(azimuth), e = glm::radians(elevation);
+  return {std::sin(a) * std::cos(e), -std::cos(a) * std::cos(e), std::sin(e)};
+}
+
+bool isLeafPixel(const Image& withLeaves, const Image& without, std::size_t i) {
+  return withLeaves.rgba[i] != without.rgba[i] || withLeaves.rgba[i + 1] != without.rgba[i + 1] ||
+         withLeaves.rgba[i + 2] != without.rgba[i + 2];
+}
+
+}  // namespace
+
+TEST_CASE("every leaf becomes one quad, and density keeps that share of them", "[render][leaves]") {
+  REQUIRE(test::vulkan().features().geometryShader);
+  LeafScene scene("quaking-aspen", 3, 64, 80);
+  const std::uint64_t leaves = scene.skeleton.leaves.size();
+  REQUIRE(leaves > 1000);
+  render::RenderSettings settings;
+  settings.mode = render::RenderMode::Flat;
+  const std::uint64_t bare = scene.session.render(scene.framed(0.8f), settings).gpu.triangles;
+  settings.leaves = true;
+  CHECK(scene.session.render(scene.framed(0.8f), settings).gpu.triangles == bare + 2 * leaves);
+  settings.leafDensity = 0.25f;
+  const std::uint64_t quarter = scene.session.render(scene.framed(0.8f), settings).gpu.triangles - bare;
+  CHECK(std::abs(static_cast<double>(quarter) - 0.5 * static_cast<double>(leaves)) <= 2.0);  // 2 per kept leaf
+}
+
+TEST_CASE("distance thins the leaves gradually, the farther the fewer", "[render][leaves]") {
+  LeafScene scene("quaking-aspen", 3, 64, 80);
+  const double leaves = static_cast<double>(scene.skeleton.leaves.size());
+  render::RenderSettings settings;
+  settings.mode = render::RenderMode::Flat;
+  settings.leaves = true;
+  settings.leafLodDistance = 30.0f;
+  const render::Camera near = scene.framed(0.8f);
+  settings.leaves = false;
+  const std::uint64_t bare = scene.session.render(near, settings).gpu.triangles;
+  settings.leaves = true;
+  double previous = 2.0 * leaves;
+  for (float k = 1.0f; k <= 4.0f; k += 0.1f) {
+    render::Camera c = near;
+    c.eye = c.target + (near.eye - near.target) * k;
+    c.farPlane *= k;
+    const double drawn = static_cast<double>(scene.session.render(c, settings).gpu.triangles - bare);
+    INFO("distance factor " << k << ": " << drawn / 2.0 << " of " << leaves << " leaves");
+    CHECK(drawn <= previous);
+    CHECK(previous - drawn < 0.2 * 2.0 * leaves);  // a tenth farther never drops a large share at once
+    previous = drawn;
+  }
+  CHECK(previous < 0.5 * 2.0 * leaves);  // and far away most are gone
+}
+
+TEST_CASE("leaves with the sun behind them glow yellow-green; self-shadowing darkens the crown", "[render][leaves]") {
+  LeafScene scene("quaking-aspen", 3, 200, 250);
+  const render::Camera camera = scene.framed(0.8f);
+  render::RenderSettings settings;
+  settings.mode = render::RenderMode::Flat;
+  settings.ground = false;
+  settings.lightDirection = sun(25.0f, 40.0f);
+  const Image bare = (scene.session.render(camera, settings), scene.session.image());
+  settings.leaves = true;
+  const Image front = (scene.session.render(camera, settings), scene.session.image());
+  settings.lightDirection = sun(205.0f, 15.0f);  // behind the crown, low
+  const Image back = (scene.session.render(camera, settings), scene.session.image());
+  settings.lightDirection = sun(25.0f, 40.0f);
+  settings.shadowLeaves = 250;
+  const Image shadowed = (scene.session.render(camera, settings), scene.session.image());
+  settings.shadowLeaves = 1000;
+  const Image shadowedMore = (scene.session.render(camera, settings), scene.session.image());
+
+  double frontBlue = 0.0, backBlue = 0.0, frontLuma = 0.0, shadowedLuma = 0.0, shadowedMoreLuma = 0.0, pixels = 0.0;
+  for (std::size_t i = 0; i < bare.rgba.size(); i += 4) {
+    if (!isLeafPixel(front, bare, i) || !isLeafPixel(back, bare, i)) continue;
+    pixels += 1.0;
+    const auto blueShare = [i](const Image& im) {
+      return static_cast<double>(im.rgba[i + 2]) / std::max(1, im.rgba[i] + im.rgba[i + 1] + im.rgba[i + 2]);
+    };
+    frontBlue += blueShare(front);
+    backBlue += blueShare(back);
+    frontLuma += front.rgba[i] + front.rgba[i + 1] + front.rgba[i + 2];
+    shadowedLuma += shadowed.rgba[i] + shadowed.rgba[i + 1] + shadowed.rgba[i + 2];
+    shadowedMoreLuma += shadowedMore.rgba[i] + shadowedMore.rgba[i + 1] + shadowedMore.rgba[i + 2];
+  }
+  INFO(pixels << " leaf pixels; luma front " << frontLuma << ", 250 shadow leaves " << shadowedLuma << ", 1000 "
+                << shadowedMoreLuma);
+  REQUIRE(pixels > 500);
+  CHECK(backBlue < 0.85 * frontBlue);      // the light through the leaves is yellow-green: less blue
+  CHECK(shadowedLuma < 0.99 * frontLuma);         // inner leaves lose the sun
+  CHECK(shadowedMoreLuma < 0.99 * shadowedLuma);  // and more of them against more leaves
+}
+
+TEST_CASE("golden images: leaves lit from the front, back-lit, self-shadowed", "[render][leaves][golden]") {
+  struct Case {
+    const char* name;
+    const char* preset;
+    int levels;
+    float azimuth, elevation;
+    std::uint32_t shadowLeaves;
+  };
+  const Case cases[] = {{"aspen-leaves-front", "quaking-aspen", 3, 25.0f, 40.0f, 0},
+                        {"aspen-leaves-backlit", "quaking-aspen", 3, 205.0f, 15.0f, 0},
+                        {"tupelo-leaves-shadowed", "black-tupelo", 3, 25.0f, 40.0f, 250},
+                        {"palm-leaves", "palm", 0, 25.0f, 40.0f, 250}};
+  for (const Case& c : cases) {
+    INFO(c.name);
+    LeafScene scene(c.preset, c.levels, 160, 200);
+    render::RenderSettings settings;
+    settings.mode = render::RenderMode::ACC;
+    settings.tessLevel = 4.0f;
+    settings.leaves = true;
+    settings.shadowLeaves = c.shadowLeaves;
+    settings.lightDirection = sun(c.azimuth, c.elevation);
+    scene.session.render(scene.framed(0.8f), settings);
+    const test::GoldenCheck golden = test::checkGolden(c.name, scene.session.image());
+    INFO(golden.report);
+    CHECK(golden.ok);
+  }
+}
