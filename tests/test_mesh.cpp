@@ -7,6 +7,7 @@
 
 #include "growth/weber_penn.hpp"
 #include "mesh/cross_section.hpp"
+#include "mesh/impostor_segments.hpp"
 #include "mesh/mesh_checks.hpp"
 #include "mesh/tree_mesh.hpp"
 #include "patches/limit_reference.hpp"
@@ -196,6 +197,40 @@ TEST_CASE("mesh levels leave the deeper stems out and the mesh closed", "[mesh]"
   const MeshTopologyReport r = checkTopology(tree.mesh);
   CHECK(r.boundaryEdges == 0);
   CHECK(r.eulerCharacteristic == 2);
+}
+
+TEST_CASE("fake-branch segments are exactly the skeleton edges the mesh leaves out, chained with their radii",
+          "[mesh][impostors]") {
+  const Skeleton s = grow(test::loadPreset("quaking-aspen"), 1, 3);
+  const std::vector<ImpostorSegment> segments = impostorSegments(s, 2);
+  std::size_t expected = 0;
+  std::map<std::pair<double, double>, const SkeletonNode*> nodeAt;  // by (x, y) of its world position
+  for (const SkeletonNode& node : s.nodes) {
+    if (node.parent >= 0 && node.level >= 2) ++expected;
+    nodeAt[{node.world.position.x, node.world.position.y}] = &node;
+  }
+  REQUIRE(expected > 1000);
+  REQUIRE(segments.size() == expected);
+  std::size_t continued = 0;
+  for (const ImpostorSegment& seg : segments) {
+    CHECK(seg.level == 2);
+    const SkeletonNode* node = nodeAt.at({seg.to.x, seg.to.y});
+    CHECK(seg.to == node->world.position);
+    CHECK(seg.from == s.nodes[static_cast<std::size_t>(node->parent)].world.position);
+    CHECK(seg.toRadius == node->radius);
+    CHECK(seg.fromRadius == node->startRadius);
+    CHECK(seg.toV >= seg.fromV);
+    // Bark runs on along the stem: a segment from an impostor node starts at the v where that node's ended.
+    const SkeletonNode& parent = s.nodes[static_cast<std::size_t>(node->parent)];
+    if (parent.level >= 2 && parent.parent >= 0) {
+      const auto previous = std::find_if(segments.begin(), segments.end(), [&](const ImpostorSegment& o) { return o.to == seg.from; });
+      REQUIRE(previous != segments.end());
+      CHECK(previous->toV == seg.fromV);
+      ++continued;
+    }
+  }
+  CHECK(continued > segments.size() / 2);
+  CHECK(impostorSegments(s, 3).empty());  // nothing beyond the grown levels
 }
 
 TEST_CASE("a distance limit adds cross sections until none are farther apart", "[mesh]") {

@@ -1,5 +1,7 @@
 #include "mesh_attributes.hpp"
 
+#include <numbers>
+
 #include <glm/geometric.hpp>
 
 namespace arbor {
@@ -18,6 +20,10 @@ void computeNormals(QuadMesh& mesh) {
     const double len = glm::length(sum[i]);
     mesh.normals[i] = len > 0.0 ? glm::vec3(sum[i] / len) : glm::vec3(0, 0, 1);
   }
+}
+
+double barkTextureAdvance(double distance, double radius) {
+  return distance / (std::numbers::pi * (0.2 + 0.8 * radius));
 }
 
 }  // namespace arbor

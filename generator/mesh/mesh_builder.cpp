@@ -38,9 +38,6 @@ struct PortStart {
   std::size_t parentFacesBegin = 0, parentFacesEnd = 0;  // the parent stem's quads, complete by then
 };
 
-// Texture v advances by distance over the bark scale 0.2 + 0.8 r, normalised by pi (u spans half a turn).
-double texAdvance(double distance, double radius) { return distance / (kPi * (0.2 + 0.8 * radius)); }
-
 class Builder {
  public:
   Builder(const Skeleton& s, const MeshOptions& o, TreeMesh& out) : sk_(s), opt_(o), out_(out) {}
@@ -257,7 +254,7 @@ class Builder {
     const std::array<Vec3, 4> exitCorners{exitCenter + offsets[0], exitCenter + offsets[1], exitCenter + offsets[2],
                                           exitCenter + offsets[3]};
     sLo = clearOfParent(poly, start, exitFrame, exitCorners, sLo, 0.25 * std::max(portRadius, rc));
-    const Ring exit = emitRing(stem, exitCenter, exitFrame, exitRadius, port.tex + texAdvance(e, exitRadius));
+    const Ring exit = emitRing(stem, exitCenter, exitFrame, exitRadius, port.tex + barkTextureAdvance(e, exitRadius));
     band(port, exit);
     // The neck from the port widens towards the parent: grandchildren connect beyond its width.
     slabStart = std::min(sLo + 2.0 * portRadius, poly.length());
@@ -456,7 +453,7 @@ class Builder {
         const Vec3 p = poly.position(s);
         const double r = std::max(poly.radius(std::min(s, sEnd)), 0.35 * last.radius);
         const RingFrame frame = transportFrame(last.frame, poly.endDirection());
-        const Ring tip = emitRing(stem, p, frame, r, last.tex + texAdvance(glm::distance(p, last.center), r));
+        const Ring tip = emitRing(stem, p, frame, r, last.tex + barkTextureAdvance(glm::distance(p, last.center), r));
         band(last, tip);
         addQuad(tip.v[0], tip.v[1], tip.v[2], tip.v[3]);
         return;
@@ -488,7 +485,7 @@ class Builder {
     const Vec3 p = poly.position(s);
     const double r = std::max({poly.radius(s), minRadius, 1e-5 * sk_.treeScale});
     const RingFrame frame = transportFrame(last.frame, poly.direction(s));
-    return emitRing(stem, p, frame, r, last.tex + texAdvance(glm::distance(p, last.center), 0.5 * (r + last.radius)));
+    return emitRing(stem, p, frame, r, last.tex + barkTextureAdvance(glm::distance(p, last.center), 0.5 * (r + last.radius)));
   }
 
   Ring advance(int stem, const StemPolyline& poly, const Ring& last, double s) {
@@ -587,7 +584,7 @@ class Builder {
     const Vec3 dir = poly.endDirection();
     const Vec3 p = lo.center + dir * (slab.hi - slab.lo);
     const RingFrame frame = transportFrame(lo.frame, dir);
-    const Ring hi = emitRing(stem, p, frame, lo.radius, lo.tex + texAdvance(slab.hi - slab.lo, lo.radius));
+    const Ring hi = emitRing(stem, p, frame, lo.radius, lo.tex + barkTextureAdvance(slab.hi - slab.lo, lo.radius));
     connect(stem, slab.node, lo, hi, slab.children, &hi, slab.children.size() == 2);
   }
 
@@ -620,9 +617,9 @@ class Builder {
     for (std::uint32_t v : q) port.tex += 0.25 * uvwSum_[v].y / std::max(1, uvwCount_[v]);
     const RingFrame frame = transportFrame(port.frame, n);
     const double r = 0.8 * rho / opt_.limitCompensation;
-    const Ring a = emitRing(parentStem, center + n * (0.5 * rho), frame, r, port.tex + texAdvance(0.5 * rho, r));
+    const Ring a = emitRing(parentStem, center + n * (0.5 * rho), frame, r, port.tex + barkTextureAdvance(0.5 * rho, r));
     band(port, a);
-    const Ring b = emitRing(parentStem, center + n * (1.5 * rho), frame, r, a.tex + texAdvance(rho, r));
+    const Ring b = emitRing(parentStem, center + n * (1.5 * rho), frame, r, a.tex + barkTextureAdvance(rho, r));
     connect(parentStem, node, a, b, children, &b, false);
   }
 
@@ -636,7 +633,7 @@ class Builder {
     const Ring base = emitRing(trunks[0], origin, frame, 1.5 * rho, 0.0);
     if (opt_.openBase) out_.mesh.openBoundary.assign(base.v.begin(), base.v.end());
     else addQuad(base.v[3], base.v[2], base.v[1], base.v[0]);
-    const Ring top = emitRing(trunks[0], origin + kUp * (3.0 * rho), frame, 1.5 * rho, texAdvance(3.0 * rho, rho));
+    const Ring top = emitRing(trunks[0], origin + kUp * (3.0 * rho), frame, 1.5 * rho, barkTextureAdvance(3.0 * rho, rho));
     std::vector<std::pair<int, PortStart>> children;
     deferred_ = &children;
     connect(-1, 0, base, top, trunks, &top, false);

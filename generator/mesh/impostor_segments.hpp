@@ -1,0 +1,20 @@
+#pragma once
+// Fake branches (Nystad 5.5.4): the stems the mesh leaves out, as one segment per skeleton edge, for the
+// renderer to draw as view-oriented rectangles between each node and its parent, scaled by the radii.
+#include <vector>
+
+#include "growth/skeleton.hpp"
+
+namespace arbor {
+
+struct ImpostorSegment {
+  Vec3 from{}, to{};                   // object space: the parent node, the node
+  double fromRadius = 0, toRadius = 0; // the edge's radius leaving the parent node, arriving at the node
+  double fromV = 0, toV = 0;           // bark texture v along the stem (continuing from the stem's start)
+  int level = 0;
+};
+
+// Segments of every stem of `fromLevel` and deeper, in node order (parents before children).
+std::vector<ImpostorSegment> impostorSegments(const Skeleton& skeleton, int fromLevel);
+
+}  // namespace arbor
