@@ -59,3 +59,11 @@ float displacement(vec3 uvw, float radius, float lod) {
   float d = heightAt(barkCoordinates(uvw), lod);
   return (d - scene.displace.y) * radius * scene.displace.x * seamFade(uvw.z);
 }
+
+// Sun and sky on bark of this albedo with shading normal n, gamma-encoded for the 8-bit target.
+vec3 barkLighting(vec3 albedo, vec3 n) {
+  vec3 l = normalize(scene.lightDir.xyz);
+  float sun = max(dot(n, l), 0.0) * scene.lightDir.w;
+  vec3 sky = mix(scene.ground.rgb * 0.6, scene.skyTop.rgb, 0.5 + 0.5 * n.z);
+  return pow(albedo * (1.2 * sun * vec3(1.0, 0.96, 0.88) + 0.6 * sky), vec3(1.0 / 2.2));
+}

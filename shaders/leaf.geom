@@ -9,7 +9,7 @@ layout(triangle_strip, max_vertices = 4) out;
 
 #include "scene.glsl"
 
-layout(location = 0) flat in uint leafIndex[];
+layout(location = 0) flat in uint pointIndex[];
 
 layout(location = 0) out vec3 worldPosition;
 layout(location = 1) out vec3 worldNormal;
@@ -17,7 +17,7 @@ layout(location = 2) out vec2 atlasCoordinate;
 layout(location = 3) flat out float lightReaching;  // 1: unshadowed, 0: behind another leaf
 
 void main() {
-  uint i = leafIndex[0];
+  uint i = pointIndex[0];
   Leaf leaf = leaves[i];
   vec3 base = (draw.model * vec4(leaf.positionLength.xyz, 1.0)).xyz;
   float eyeDistance = length(base - scene.cameraPos.xyz);

@@ -1,9 +1,10 @@
 #version 450
-// Leaves: one point per leaf; the geometry stage reads the leaf and expands it, so only its index passes on.
+// One point per leaf or fake-branch segment: the geometry stage reads its record and expands it, so only the
+// index passes on.
 
-layout(location = 0) flat out uint leafIndex;
+layout(location = 0) flat out uint pointIndex;
 
 void main() {
-  leafIndex = uint(gl_VertexIndex);
+  pointIndex = uint(gl_VertexIndex);
   gl_Position = vec4(0.0);
 }

@@ -39,6 +39,14 @@ struct Leaf {
 // In a random order, so that the first ones are a fair sample (thinning, self-shadowing).
 layout(set = 0, binding = 8, std430) readonly buffer Leaves { Leaf leaves[]; };
 layout(set = 0, binding = 9) uniform sampler2D leafAtlas;
+
+struct Impostor {
+  vec4 fromRadius;  // object space parent node, the edge's radius leaving it
+  vec4 toRadius;    // the node, the radius arriving there
+  vec4 barkV;       // texture v at both ends, stem level
+};
+// Fake branches: the skeleton edges of the stems the mesh leaves out.
+layout(set = 0, binding = 10, std430) readonly buffer Impostors { Impostor impostors[]; };
 layout(set = 0, binding = 4) uniform sampler2D barkColor;
 layout(set = 0, binding = 5) uniform sampler2D barkHeight;
 

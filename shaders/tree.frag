@@ -39,10 +39,5 @@ void main() {
   vec3 bumped = abs(det) * n - strength * gradient;
   if (abs(det) > 1e-20 && dot(bumped, bumped) > 1e-30) n = normalize(bumped);
 
-  vec3 l = normalize(scene.lightDir.xyz);
-  float sun = max(dot(n, l), 0.0) * scene.lightDir.w;
-  vec3 sky = mix(scene.ground.rgb * 0.6, scene.skyTop.rgb, 0.5 + 0.5 * n.z);
-  vec3 lit = albedo * (1.2 * sun * vec3(1.0, 0.96, 0.88) + 0.6 * sky);
-  if (scene.flags.y != 0u) lit = vec3(0.05);  // wireframe overlay
-  color = vec4(pow(lit, vec3(1.0 / 2.2)), 1.0);
+  color = vec4(scene.flags.y != 0u ? pow(vec3(0.05), vec3(1.0 / 2.2)) : barkLighting(albedo, n), 1.0);  // y: wireframe
 }

@@ -5,7 +5,9 @@
 #include <filesystem>
 #include <sstream>
 
+#include "growth/weber_penn.hpp"
 #include "image/image_compare.hpp"
+#include "test_support.hpp"
 
 namespace arbor::test {
 
@@ -37,6 +39,37 @@ vk::VulkanContext& vulkan() {
 const render::TreeTextures& textures() {
   static const render::TreeTextures images = render::loadTreeTextures(ARBOR_ASSET_DIR);
   return images;
+}
+
+namespace {
+
+Skeleton grownFor(const std::string& preset, int meshLevels, int impostorLevels) {
+  const SpeciesParams params = loadPreset(preset);
+  GrowthOptions growth;
+  growth.levels = (meshLevels > 0 ? meshLevels : params.levels) + impostorLevels;
+  return generateSkeleton(params, growth);
+}
+
+MeshOptions meshLevelsOf(const Skeleton& skeleton, int impostorLevels) {
+  MeshOptions options;
+  options.levels = impostorLevels > 0 ? skeleton.levels - impostorLevels : 0;
+  return options;
+}
+
+}  // namespace
+
+TreeScene::TreeScene(const std::string& preset, int meshLevels, int impostorLevels, std::uint32_t width, std::uint32_t height)
+    : skeleton(grownFor(preset, meshLevels, impostorLevels)),
+      tree(buildTreeMesh(skeleton, meshLevelsOf(skeleton, impostorLevels))),
+      patches(buildPatches(tree.mesh)),
+      impostors(impostorLevels > 0 ? impostorSegments(skeleton, skeleton.levels - impostorLevels) : std::vector<ImpostorSegment>{}),
+      session(vulkan(), width, height, VK_SAMPLE_COUNT_1_BIT, textures()) {
+  session.setTree(tree.mesh, patches, skeleton.leaves, impostors);
+}
+
+render::Camera TreeScene::framed() const {
+  const VkExtent2D e = session.extent();
+  return render::frameBounds(render::plantedBounds(*session.tree()), 25.0f, 6.0f, static_cast<float>(e.width) / static_cast<float>(e.height));
 }
 
 GoldenCheck checkGolden(const std::string& name, const Image& actual) {

@@ -2,7 +2,11 @@
 // A Vulkan context with the validation layer on, shared by the render tests (lavapipe under CTest).
 #include <string>
 
+#include "growth/skeleton.hpp"
 #include "image/png_io.hpp"
+#include "mesh/impostor_segments.hpp"
+#include "mesh/tree_mesh.hpp"
+#include "patches/patch_set.hpp"
 #include "render/render_session.hpp"
 #include "vk/context.hpp"
 
@@ -10,6 +14,20 @@ namespace arbor::test {
 
 vk::VulkanContext& vulkan();
 const render::TreeTextures& textures();
+
+// A preset grown, meshed and uploaded with its leaves and fake branches into its own offscreen session.
+struct TreeScene {
+  Skeleton skeleton;
+  TreeMesh tree;
+  PatchSet patches;
+  std::vector<ImpostorSegment> impostors;
+  render::RenderSession session;
+
+  // meshLevels 0: the species' Levels; impostorLevels more are grown and drawn as fake branches.
+  TreeScene(const std::string& preset, int meshLevels, int impostorLevels, std::uint32_t width, std::uint32_t height);
+  // The whole planted tree from the default framing (azimuth 25, elevation 6 degrees).
+  render::Camera framed() const;
+};
 
 // Screenshot regression against tests/golden/<name>.png. Tolerance: lavapipe is bit-exact on one machine;
 // another CPU's LLVM code may round a few pixels apart, so at most 0.5 % of the pixels may differ by more than

@@ -194,6 +194,18 @@ TEST_CASE("render writes a PNG of the asked size and reports the triangles it ge
   CHECK(pngSize(out) == std::make_pair(64u, 80u));
 }
 
+TEST_CASE("render with fake branches and leaves says how many it drew", "[cli][render]") {
+  const std::string out = arbor::test::tempPath("render-aspen-impostors.png");
+  fs::remove(out);
+  const Result r = run("render quaking-aspen --levels 1 --impostor-levels 1 --leaves --mode flat --size 64x80 --validation --out " + out);
+  INFO(r.output);
+  REQUIRE(r.exitCode == 0);
+  CHECK_THAT(r.output, Catch::Contains("leaves, "));
+  CHECK_THAT(r.output, Catch::Contains("fake-branch segments"));
+  CHECK_THAT(r.output, !Catch::Contains("not drawn"));
+  CHECK(pngSize(out) == std::make_pair(64u, 80u));
+}
+
 TEST_CASE("render refuses bad options with 2, naming the option, and writes nothing", "[cli][render]") {
   const std::string out = arbor::test::tempPath("render-bad.png");
   fs::remove(out);
@@ -205,6 +217,10 @@ TEST_CASE("render refuses bad options with 2, naming the option, and writes noth
       {"render palm --camera 1,2,3 --out ", "--camera"},
       {"render palm --camera 0,0,1,0,0,1 --out ", "--camera"},
       {"render no-such-tree --out ", "no-such-tree"},
+      {"render palm --impostor-levels 4 --out ", "--impostor-levels"},
+      {"render palm --levels 7 --impostor-levels 2 --out ", "at most 8"},
+      {"render palm --leaf-density 1.5 --out ", "--leaf-density"},
+      {"render palm --light 30,95 --out ", "--light"},
   };
   for (const auto& [arguments, field] : cases) {
     const Result r = run(std::string(arguments) + out);

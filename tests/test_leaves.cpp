@@ -12,33 +12,6 @@ using namespace arbor;
 
 namespace {
 
-struct LeafScene {
-  Skeleton skeleton;
-  TreeMesh tree;
-  PatchSet patches;
-  render::RenderSession session;
-
-  LeafScene(const char* preset, int levels, std::uint32_t width, std::uint32_t height)
-      : skeleton(generateSkeleton(test::loadPreset(preset), [levels] {
-          GrowthOptions g;
-          g.levels = levels;
-          return g;
-        }())),
-        tree(buildTreeMesh(skeleton)),
-        patches(buildPatches(tree.mesh)),
-        session(test::vulkan(), width, height, VK_SAMPLE_COUNT_1_BIT, test::textures()) {
-    session.setTree(tree.mesh, patches, skeleton.leaves);
-  }
-
-  render::Camera framed(float aspect) const { return render::frameBounds(render::plantedBounds(*session.tree()), 25.0f, 6.0f, aspect); }
-};
-
-// A sun at (azimuth, elevation) in degrees, azimuth measured like the framing camera's.
-glm::vec3 sun(float azimuth, float elevation) {
-  const float a = glm::radians(azimuth), e = glm::radians(elevation);
-  return {std::sin(a) * std::cos(e), -std::cos(a) * std::cos(e), std::sin(e)};
-}
-
 bool isLeafPixel(const Image& withLeaves, const Image& without, std::size_t i) {
   return withLeaves.rgba[i] != without.rgba[i] || withLeaves.rgba[i + 1] != without.rgba[i + 1] ||
          withLeaves.rgba[i + 2] != without.rgba[i + 2];
@@ -48,27 +21,27 @@ bool isLeafPixel(const Image& withLeaves, const Image& without, std::size_t i) {
 
 TEST_CASE("every leaf becomes one quad, and density keeps that share of them", "[render][leaves]") {
   REQUIRE(test::vulkan().features().geometryShader);
-  LeafScene scene("quaking-aspen", 3, 64, 80);
+  test::TreeScene scene("quaking-aspen", 3, 0, 64, 80);
   const std::uint64_t leaves = scene.skeleton.leaves.size();
   REQUIRE(leaves > 1000);
   render::RenderSettings settings;
   settings.mode = render::RenderMode::Flat;
-  const std::uint64_t bare = scene.session.render(scene.framed(0.8f), settings).gpu.triangles;
+  const std::uint64_t bare = scene.session.render(scene.framed(), settings).gpu.triangles;
   settings.leaves = true;
-  CHECK(scene.session.render(scene.framed(0.8f), settings).gpu.triangles == bare + 2 * leaves);
+  CHECK(scene.session.render(scene.framed(), settings).gpu.triangles == bare + 2 * leaves);
   settings.leafDensity = 0.25f;
-  const std::uint64_t quarter = scene.session.render(scene.framed(0.8f), settings).gpu.triangles - bare;
+  const std::uint64_t quarter = scene.session.render(scene.framed(), settings).gpu.triangles - bare;
   CHECK(std::abs(static_cast<double>(quarter) - 0.5 * static_cast<double>(leaves)) <= 2.0);  // 2 per kept leaf
 }
 
 TEST_CASE("distance thins the leaves gradually, the farther the fewer", "[render][leaves]") {
-  LeafScene scene("quaking-aspen", 3, 64, 80);
+  test::TreeScene scene("quaking-aspen", 3, 0, 64, 80);
   const double leaves = static_cast<double>(scene.skeleton.leaves.size());
   render::RenderSettings settings;
   settings.mode = render::RenderMode::Flat;
   settings.leaves = true;
   settings.leafLodDistance = 30.0f;
-  const render::Camera near = scene.framed(0.8f);
+  const render::Camera near = scene.framed();
   settings.leaves = false;
   const std::uint64_t bare = scene.session.render(near, settings).gpu.triangles;
   settings.leaves = true;
@@ -87,18 +60,18 @@ TEST_CASE("distance thins the leaves gradually, the farther the fewer", "[render
 }
 
 TEST_CASE("leaves with the sun behind them glow yellow-green; self-shadowing darkens the crown", "[render][leaves]") {
-  LeafScene scene("quaking-aspen", 3, 200, 250);
-  const render::Camera camera = scene.framed(0.8f);
+  test::TreeScene scene("quaking-aspen", 3, 0, 200, 250);
+  const render::Camera camera = scene.framed();
   render::RenderSettings settings;
   settings.mode = render::RenderMode::Flat;
   settings.ground = false;
-  settings.lightDirection = sun(25.0f, 40.0f);
+  settings.lightDirection = render::sunDirection(25.0f, 40.0f);
   const Image bare = (scene.session.render(camera, settings), scene.session.image());
   settings.leaves = true;
   const Image front = (scene.session.render(camera, settings), scene.session.image());
-  settings.lightDirection = sun(205.0f, 15.0f);  // behind the crown, low
+  settings.lightDirection = render::sunDirection(205.0f, 15.0f);  // behind the crown, low
   const Image back = (scene.session.render(camera, settings), scene.session.image());
-  settings.lightDirection = sun(25.0f, 40.0f);
+  settings.lightDirection = render::sunDirection(25.0f, 40.0f);
   settings.shadowLeaves = 250;
   const Image shadowed = (scene.session.render(camera, settings), scene.session.image());
   settings.shadowLeaves = 1000;
@@ -139,14 +112,14 @@ TEST_CASE("golden images: leaves lit from the front, back-lit, self-shadowed", "
                         {"palm-leaves", "palm", 0, 25.0f, 40.0f, 250}};
   for (const Case& c : cases) {
     INFO(c.name);
-    LeafScene scene(c.preset, c.levels, 160, 200);
+    test::TreeScene scene(c.preset, c.levels, 0, 160, 200);
     render::RenderSettings settings;
     settings.mode = render::RenderMode::ACC;
     settings.tessLevel = 4.0f;
     settings.leaves = true;
     settings.shadowLeaves = c.shadowLeaves;
-    settings.lightDirection = sun(c.azimuth, c.elevation);
-    scene.session.render(scene.framed(0.8f), settings);
+    settings.lightDirection = render::sunDirection(c.azimuth, c.elevation);
+    scene.session.render(scene.framed(), settings);
     const test::GoldenCheck golden = test::checkGolden(c.name, scene.session.image());
     INFO(golden.report);
     CHECK(golden.ok);

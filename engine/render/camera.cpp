@@ -82,4 +82,9 @@ Camera parseCamera(const std::string& text) {
   return c;
 }
 
+glm::vec3 sunDirection(float azimuthDegrees, float elevationDegrees) {
+  const float a = glm::radians(azimuthDegrees), e = glm::radians(elevationDegrees);
+  return {std::sin(a) * std::cos(e), -std::cos(a) * std::cos(e), std::sin(e)};
+}
+
 }  // namespace arbor::render

@@ -30,4 +30,8 @@ Camera frameBounds(const Bounds& bounds, float azimuthDegrees, float elevationDe
 // "ex,ey,ez,tx,ty,tz[,fovDegrees]"; throws std::invalid_argument with what is wrong.
 Camera parseCamera(const std::string& text);
 
+// Unit vector towards a sun at this azimuth and elevation (degrees), the azimuth measured like frameBounds'
+// (0: from -y, where the default camera stands).
+glm::vec3 sunDirection(float azimuthDegrees, float elevationDegrees);
+
 }  // namespace arbor::render

@@ -22,6 +22,10 @@ struct GpuLeaf {
   glm::vec4 positionLength, directionWidth, normalKind;
 };
 
+struct GpuImpostor {
+  glm::vec4 fromRadius, toRadius, barkV;
+};
+
 std::uint32_t pack(const std::array<std::uint8_t, 4>& bytes) {
   return static_cast<std::uint32_t>(bytes[0]) | (static_cast<std::uint32_t>(bytes[1]) << 8) |
          (static_cast<std::uint32_t>(bytes[2]) << 16) | (static_cast<std::uint32_t>(bytes[3]) << 24);
@@ -30,7 +34,7 @@ std::uint32_t pack(const std::array<std::uint8_t, 4>& bytes) {
 }  // namespace
 
 GpuTree uploadTree(const vk::VulkanContext& context, const QuadMesh& mesh, const PatchSet& patches,
-                   const std::vector<Leaf>& leaves) {
+                   const std::vector<Leaf>& leaves, const std::vector<ImpostorSegment>& impostors) {
   std::vector<GpuVertex> vertices(mesh.vertexCount());
   for (std::size_t i = 0; i < vertices.size(); ++i) {
     vertices[i] = {glm::vec4(mesh.positions[i], mesh.radius[i]), glm::vec4(mesh.normals[i], mesh.level[i]),
@@ -70,7 +74,19 @@ GpuTree uploadTree(const vk::VulkanContext& context, const QuadMesh& mesh, const
   if (!leafRecords.empty()) {
     tree.leaves = vk::uploadBuffer(context, leafRecords.data(), leafRecords.size() * sizeof(GpuLeaf), storage);
   }
-  tree.bytes = tree.vertices.size() + tree.indices.size() + tree.patches.size() + tree.points.size() + tree.leaves.size();
+  std::vector<GpuImpostor> impostorRecords;
+  impostorRecords.reserve(impostors.size());
+  for (const ImpostorSegment& s : impostors) {
+    impostorRecords.push_back({glm::vec4(glm::vec3(s.from), static_cast<float>(s.fromRadius)),
+                               glm::vec4(glm::vec3(s.to), static_cast<float>(s.toRadius)),
+                               glm::vec4(static_cast<float>(s.fromV), static_cast<float>(s.toV), static_cast<float>(s.level), 0.0f)});
+  }
+  tree.impostorCount = static_cast<std::uint32_t>(impostorRecords.size());
+  if (!impostorRecords.empty()) {
+    tree.impostors = vk::uploadBuffer(context, impostorRecords.data(), impostorRecords.size() * sizeof(GpuImpostor), storage);
+  }
+  tree.bytes = tree.vertices.size() + tree.indices.size() + tree.patches.size() + tree.points.size() + tree.leaves.size() +
+               tree.impostors.size();
   tree.bounds = meshBounds(mesh);
   // Planted so that the limit surface is at full width at the ground: the closed base's corners (limit
   // positions) are pulled up and in, and the rounding reaches about half a radius above them.

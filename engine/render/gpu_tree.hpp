@@ -3,6 +3,7 @@
 // patches with their control point indices (ACC).
 #include "camera.hpp"
 #include "growth/skeleton.hpp"
+#include "mesh/impostor_segments.hpp"
 #include "mesh/quad_mesh.hpp"
 #include "patches/patch_set.hpp"
 #include "vk/buffer.hpp"
@@ -15,7 +16,8 @@ struct GpuTree {
   vk::Buffer patches;    // per patch: point offset, valences, prefixes, kind
   vk::Buffer points;     // control point vertex indices
   vk::Buffer leaves;     // per leaf: base + length, direction + half width, normal + kind; in random order
-  std::uint32_t leafCount = 0;
+  vk::Buffer impostors;  // per fake-branch segment: parent node + radius, node + radius, bark v at both, level
+  std::uint32_t leafCount = 0, impostorCount = 0;
   std::uint32_t triangles = 0, patchCount = 0;
   std::uint32_t regular = 0, extraordinary = 0, fallback = 0;
   std::size_t bytes = 0;  // all buffers together
@@ -29,7 +31,8 @@ glm::mat4 plantedModel(const GpuTree& tree);
 Bounds plantedBounds(const GpuTree& tree);
 
 // `leaves` (the skeleton's) are shuffled with a fixed seed, so any prefix of them is a fair sample of the crown.
+// `impostors` are the fake branches standing in for the stems the mesh leaves out.
 GpuTree uploadTree(const vk::VulkanContext& context, const QuadMesh& mesh, const PatchSet& patches,
-                   const std::vector<Leaf>& leaves = {});
+                   const std::vector<Leaf>& leaves = {}, const std::vector<ImpostorSegment>& impostors = {});
 
 }  // namespace arbor::render

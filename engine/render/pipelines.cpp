@@ -11,7 +11,9 @@
 #include "spirv_ground_vert.h"
 #include "spirv_leaf_frag.h"
 #include "spirv_leaf_geom.h"
-#include "spirv_leaf_vert.h"
+#include "spirv_point_vert.h"
+#include "spirv_impostor_geom.h"
+#include "spirv_impostor_frag.h"
 #include "spirv_pn_tesc.h"
 #include "spirv_pn_tese.h"
 #include "spirv_pn_vert.h"
@@ -147,7 +149,7 @@ VkPipeline build(VkDevice device, VkRenderPass renderPass, VkPipelineLayout layo
 
 void Pipelines::destroy(VkDevice device) {
   for (VkPipeline p : {sky, ground, tree[0], tree[1], tree[2], wireframe[0], wireframe[1], wireframe[2], twoSided[0],
-                       twoSided[1], twoSided[2], leaves}) {
+                       twoSided[1], twoSided[2], leaves, impostors}) {
     if (p) vkDestroyPipeline(device, p, nullptr);
   }
   if (layout) vkDestroyPipelineLayout(device, layout, nullptr);
@@ -164,7 +166,7 @@ Pipelines createPipelines(const vk::VulkanContext& context, VkRenderPass renderP
                                  (geometry ? VkShaderStageFlags{VK_SHADER_STAGE_GEOMETRY_BIT} : VkShaderStageFlags{0});
   p.pushStages = all;
   const VkShaderStageFlags tess = VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT | VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT;
-  const std::array<VkDescriptorSetLayoutBinding, 10> bindings{{
+  const std::array<VkDescriptorSetLayoutBinding, 11> bindings{{
       {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, all, nullptr},
       {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, all, nullptr},
       {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, tess, nullptr},
@@ -175,6 +177,7 @@ Pipelines createPipelines(const vk::VulkanContext& context, VkRenderPass renderP
       {7, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, nullptr},
       {8, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, all, nullptr},
       {9, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
+      {10, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, all, nullptr},
   }};
   VkDescriptorSetLayoutCreateInfo setInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
   setInfo.bindingCount = static_cast<std::uint32_t>(bindings.size());
@@ -219,11 +222,16 @@ Pipelines createPipelines(const vk::VulkanContext& context, VkRenderPass renderP
     }
   }
   if (geometry) {
-    PipelineSpec leaves{{stage(VK_SHADER_STAGE_VERTEX_BIT, spirv_leaf_vert), stage(VK_SHADER_STAGE_GEOMETRY_BIT, spirv_leaf_geom),
-                         stage(VK_SHADER_STAGE_FRAGMENT_BIT, spirv_leaf_frag)}};
+    const auto points = stage(VK_SHADER_STAGE_VERTEX_BIT, spirv_point_vert);
+    PipelineSpec leaves{{points, stage(VK_SHADER_STAGE_GEOMETRY_BIT, spirv_leaf_geom), stage(VK_SHADER_STAGE_FRAGMENT_BIT, spirv_leaf_frag)}};
     leaves.topology = VK_PRIMITIVE_TOPOLOGY_POINT_LIST;
     leaves.cullBack = false;  // a leaf is seen from both sides
     p.leaves = build(device, renderPass, p.layout, samples, leaves);
+    PipelineSpec impostors{{points, stage(VK_SHADER_STAGE_GEOMETRY_BIT, spirv_impostor_geom),
+                            stage(VK_SHADER_STAGE_FRAGMENT_BIT, spirv_impostor_frag)}};
+    impostors.topology = VK_PRIMITIVE_TOPOLOGY_POINT_LIST;
+    impostors.cullBack = false;  // the rectangle's winding depends on which way the branch points on screen
+    p.impostors = build(device, renderPass, p.layout, samples, impostors);
   }
   return p;
 }

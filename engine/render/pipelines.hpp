@@ -15,7 +15,8 @@ struct Pipelines {
   VkPipeline tree[3] = {};       // by RenderMode
   VkPipeline wireframe[3] = {};  // null where the device has no fillModeNonSolid
   VkPipeline twoSided[3] = {};   // no culling: back faces seen through cracks show (crack tests)
-  VkPipeline leaves = VK_NULL_HANDLE;  // null where the device has no geometry shaders
+  VkPipeline leaves = VK_NULL_HANDLE;     // null where the device has no geometry shaders
+  VkPipeline impostors = VK_NULL_HANDLE;  // fake branches; null likewise
   VkShaderStageFlags pushStages = 0;   // every stage the layout's push constants and bindings reach
 
   void destroy(VkDevice device);

@@ -10,9 +10,10 @@ RenderSession::RenderSession(const vk::VulkanContext& context, std::uint32_t wid
       target_(context, width, height, samples),
       renderer_(context, target_.renderPass(), samples, textures) {}
 
-void RenderSession::setTree(const QuadMesh& mesh, const PatchSet& patches, const std::vector<Leaf>& leaves) {
+void RenderSession::setTree(const QuadMesh& mesh, const PatchSet& patches, const std::vector<Leaf>& leaves,
+                            const std::vector<ImpostorSegment>& impostors) {
   renderer_.setTree(nullptr);
-  tree_ = std::make_unique<GpuTree>(uploadTree(context_, mesh, patches, leaves));
+  tree_ = std::make_unique<GpuTree>(uploadTree(context_, mesh, patches, leaves, impostors));
   renderer_.setTree(tree_.get());
 }
 

@@ -18,7 +18,8 @@ class RenderSession {
   RenderSession(const vk::VulkanContext& context, std::uint32_t width, std::uint32_t height, VkSampleCountFlagBits samples,
                 const TreeTextures& textures);
 
-  void setTree(const QuadMesh& mesh, const PatchSet& patches, const std::vector<Leaf>& leaves = {});
+  void setTree(const QuadMesh& mesh, const PatchSet& patches, const std::vector<Leaf>& leaves = {},
+               const std::vector<ImpostorSegment>& impostors = {});
   const GpuTree* tree() const { return tree_.get(); }
   FrameResult render(const Camera& camera, const RenderSettings& settings);
   Image image() const { return target_.readback(); }

@@ -62,7 +62,7 @@ TreeRenderer::TreeRenderer(const vk::VulkanContext& context, VkRenderPass render
 
   const VkDevice device = context.device();
   const std::array<VkDescriptorPoolSize, 3> sizes{{{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1},
-                                                   {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 6},
+                                                   {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 7},
                                                    {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 3}}};
   VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
   poolInfo.maxSets = 1;
@@ -134,6 +134,7 @@ void TreeRenderer::setTree(const GpuTree* tree) {
   const VkDescriptorBufferInfo pointInfo{tree ? tree->points.handle() : fallback, 0, VK_WHOLE_SIZE};
   const VkDescriptorBufferInfo indexInfo{tree ? tree->indices.handle() : fallback, 0, VK_WHOLE_SIZE};
   const VkDescriptorBufferInfo leafInfo{tree && tree->leafCount > 0 ? tree->leaves.handle() : fallback, 0, VK_WHOLE_SIZE};
+  const VkDescriptorBufferInfo impostorInfo{tree && tree->impostorCount > 0 ? tree->impostors.handle() : fallback, 0, VK_WHOLE_SIZE};
   const VkDescriptorImageInfo atlasInfo{leafSampler_, leafAtlas_.view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
   const VkDescriptorBufferInfo captureInfo{capture_.handle(), 0, VK_WHOLE_SIZE};
   const VkDescriptorImageInfo colorInfo{sampler_, barkColor_.view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
@@ -148,7 +149,7 @@ void TreeRenderer::setTree(const GpuTree* tree) {
     w.pImageInfo = i;
     return w;
   };
-  const std::array<VkWriteDescriptorSet, 10> writes{
+  const std::array<VkWriteDescriptorSet, 11> writes{
       write(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, &sceneInfo, nullptr),
       write(1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &vertexInfo, nullptr),
       write(2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &patchInfo, nullptr),
@@ -158,7 +159,8 @@ void TreeRenderer::setTree(const GpuTree* tree) {
       write(6, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &captureInfo, nullptr),
       write(7, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &indexInfo, nullptr),
       write(8, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &leafInfo, nullptr),
-      write(9, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, nullptr, &atlasInfo)};
+      write(9, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, nullptr, &atlasInfo),
+      write(10, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &impostorInfo, nullptr)};
   vkUpdateDescriptorSets(context_.device(), static_cast<std::uint32_t>(writes.size()), writes.data(), 0, nullptr);
 }
 
@@ -246,13 +248,15 @@ void TreeRenderer::draw(VkCommandBuffer cmd, VkExtent2D extent, const RenderSett
     }
   };
   drawTree(s.revealBackFaces ? pipelines_.twoSided[mode] : pipelines_.tree[mode]);
-  if (s.leaves && tree_->leafCount > 0 && pipelines_.leaves) {
+  auto drawPoints = [&](VkPipeline pipeline, std::uint32_t count) {
     constants.patchBase = 0;
     vkCmdPushConstants(cmd, pipelines_.layout, stages, 0, sizeof constants, &constants);
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.leaves);
-    vkCmdDraw(cmd, tree_->leafCount, 1, 0, 0);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
+    vkCmdDraw(cmd, count, 1, 0, 0);
     ++lastDraws_;
-  }
+  };
+  if (s.impostors && tree_->impostorCount > 0 && pipelines_.impostors) drawPoints(pipelines_.impostors, tree_->impostorCount);
+  if (s.leaves && tree_->leafCount > 0 && pipelines_.leaves) drawPoints(pipelines_.leaves, tree_->leafCount);
   if (statistics_) vkCmdEndQuery(cmd, statistics_, 0);
   if (timestamps_) vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, timestamps_, 1);
   if (s.wireframe && pipelines_.wireframe[mode]) drawTree(pipelines_.wireframe[mode]);

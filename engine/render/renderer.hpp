@@ -33,6 +33,7 @@ struct RenderSettings {
   float leafDensity = 1.0f;       // share of the leaves drawn (0..1), the first of the random order
   float leafLodDistance = 0.0f;   // > 0: all leaves up to this distance (m), then thinning with distance squared
   std::uint32_t shadowLeaves = 0; // self-shadowing: each leaf tests the first this many leaves
+  bool impostors = false;         // draw the fake branches (needs geometry shaders)
   bool revealBackFaces = false;  // draw back faces too, in magenta: on a closed surface any that shows is a crack
   std::uint32_t patchesPerDraw = 0;  // > 0: split tree draws into this many patches (tests); 0: what the driver needs
   glm::vec3 lightDirection{0.45f, -0.6f, 0.75f};
@@ -64,6 +65,7 @@ class TreeRenderer {
   TreeRenderer& operator=(const TreeRenderer&) = delete;
 
   void setTree(const GpuTree* tree);
+  // Leaves and fake branches are expanded from points by geometry shaders, which not every device has.
   bool drawsLeaves() const { return pipelines_.leaves != VK_NULL_HANDLE; }
   // Captures up to `capacity` evaluated ACC points in the next frames (0 turns it off).
   void setCapture(std::uint32_t capacity);

@@ -5,12 +5,14 @@
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
+#include <string>
 
 #include "assets.hpp"
 #include "commands.hpp"
 #include "common/text_util.hpp"
 #include "growth/weber_penn.hpp"
 #include "image/png_io.hpp"
+#include "mesh/impostor_segments.hpp"
 #include "mesh/tree_mesh.hpp"
 #include "render/render_session.hpp"
 #include "render_options.hpp"
@@ -41,6 +43,8 @@ struct RenderOptions {
   float leafDensity = 1.0f;
   float leafLod = 0.0f;
   int shadowLeaves = 0;
+  bool impostors = false;
+  int impostorLevels = 0;
   std::string light;
   bool quiet = false;
 };
@@ -53,8 +57,7 @@ glm::vec3 parseLight(const std::string& text) {
       !std::isfinite(az)) {
     throw SpeciesError(text, "--light", "expected AZIMUTH,ELEVATION in degrees, elevation from -90 to 90, e.g. 30,45");
   }
-  const float a = glm::radians(az), e = glm::radians(el);
-  return {std::sin(a) * std::cos(e), -std::cos(a) * std::cos(e), std::sin(e)};
+  return render::sunDirection(az, el);
 }
 
 int runRender(const RenderOptions& o) {
@@ -69,17 +72,29 @@ int runRender(const RenderOptions& o) {
   settings.leafDensity = o.leafDensity;
   settings.leafLodDistance = o.leafLod;
   settings.shadowLeaves = static_cast<std::uint32_t>(o.shadowLeaves);
+  const int impostorLevels = o.impostorLevels > 0 ? o.impostorLevels : (o.impostors ? 1 : 0);
+  settings.impostors = impostorLevels > 0;
   if (!o.light.empty()) settings.lightDirection = parseLight(o.light);
   std::uint32_t width = 0, height = 0;
   parseSize(o.size, width, height);
   if (!endsWith(o.out, ".png")) throw SpeciesError(o.out, "--out", "the picture is written as PNG; use a .png name");
 
   const SpeciesParams params = loadSpeciesArgument(o.species);
+  // The mesh keeps --levels (or the species'); impostor levels grow beyond them (breadth-first: the same tree
+  // below), are drawn as fake branches, and carry the leaves.
+  const int meshLevels = o.levels > 0 ? o.levels : params.levels;
+  if (meshLevels + impostorLevels > 8) {
+    throw SpeciesError(std::to_string(impostorLevels), "--impostor-levels",
+                       "mesh levels (" + std::to_string(meshLevels) + ") plus impostor levels may be at most 8");
+  }
   GrowthOptions growth;
   growth.seed = o.seed;
-  growth.levels = o.levels;
+  growth.levels = meshLevels + impostorLevels;
   const Skeleton skeleton = generateSkeleton(params, growth);
-  const TreeMesh tree = buildTreeMesh(skeleton);
+  MeshOptions meshOptions;
+  meshOptions.levels = impostorLevels > 0 ? meshLevels : 0;
+  const TreeMesh tree = buildTreeMesh(skeleton, meshOptions);
+  const std::vector<ImpostorSegment> impostors = impostorLevels > 0 ? impostorSegments(skeleton, meshLevels) : std::vector<ImpostorSegment>{};
   const PatchSet patches = buildPatches(tree.mesh);
 
   vk::ContextOptions contextOptions;
@@ -89,9 +104,10 @@ int runRender(const RenderOptions& o) {
   const auto textures = render::loadTreeTextures(assetDirectory());
   const auto samples = static_cast<VkSampleCountFlagBits>(o.msaa);
   render::RenderSession session(context, width, height, samples, textures);
-  session.setTree(tree.mesh, patches, skeleton.leaves);
-  if (o.leaves && !session.renderer().drawsLeaves()) {
-    throw std::runtime_error("--leaves: this Vulkan device has no geometry shaders, which the leaves need");
+  session.setTree(tree.mesh, patches, skeleton.leaves, impostors);
+  if ((o.leaves || settings.impostors) && !session.renderer().drawsLeaves()) {
+    throw std::runtime_error(std::string(o.leaves ? "--leaves" : "--impostors") +
+                             ": this Vulkan device has no geometry shaders, which leaves and fake branches need");
   }
 
   render::Camera camera;
@@ -132,6 +148,10 @@ int runRender(const RenderOptions& o) {
   std::printf("\n  mesh             %zu quads: %u regular, %u extraordinary, %u fallback patches; %.1f MiB on the GPU\n",
               tree.mesh.quads.size(), gpuTree.regular, gpuTree.extraordinary, gpuTree.fallback,
               static_cast<double>(gpuTree.bytes) / (1024.0 * 1024.0));
+  if (settings.leaves || settings.impostors) {
+    std::printf("  points           %u leaves%s, %u fake-branch segments%s\n", gpuTree.leafCount, settings.leaves ? "" : " (not drawn)",
+                gpuTree.impostorCount, settings.impostors ? "" : " (not drawn)");
+  }
   if (last.gpu.hasTriangles) {
     std::printf("  triangles        %llu generated (clipping primitives), %u draws\n",
                 static_cast<unsigned long long>(last.gpu.triangles), last.gpu.draws);
@@ -149,7 +169,7 @@ void addRenderCommand(CLI::App& app, Action& action) {
   CLI::App* cmd = app.add_subcommand("render", "Render a tree offscreen with GPU tessellation (Vulkan) to a PNG.");
   cmd->add_option("species", o->species, "Preset name or .json/.xml species file")->required();
   cmd->add_option("--seed", o->seed, "Random seed")->capture_default_str();
-  cmd->add_option("--levels", o->levels, "Stem levels to grow (default: the species' Levels)")->check(CLI::Range(1, 8));
+  cmd->add_option("--levels", o->levels, "Stem levels to grow and mesh (default: the species' Levels)")->check(CLI::Range(1, 8));
   cmd->add_option("--mode", o->mode, "flat (coarse mesh), pn (PN-triangles), acc (Catmull-Clark approximation)")
       ->capture_default_str();
   cmd->add_option("--tess", o->tess, "Uniform tessellation factor")->check(CLI::Range(1.0, 64.0))->capture_default_str();
@@ -174,6 +194,9 @@ void addRenderCommand(CLI::App& app, Action& action) {
   cmd->add_option("--shadow-leaves", o->shadowLeaves, "Self-shadowing: each leaf tests this many others (0: off)")
       ->check(CLI::Range(0, 4096))
       ->capture_default_str();
+  cmd->add_flag("--impostors", o->impostors, "Grow --impostor-levels more levels and draw them as fake branches (textured, view-facing)");
+  cmd->add_option("--impostor-levels", o->impostorLevels, "Levels beyond the mesh drawn as fake branches; they carry the leaves (implies --impostors; default 1)")
+      ->check(CLI::Range(1, 3));
   cmd->add_option("--light", o->light, "Sun direction as AZIMUTH,ELEVATION in degrees (azimuth 0: from -y, the default camera's side)");
   cmd->add_option("--out", o->out, "Output PNG")->required();
   cmd->add_flag("--quiet", o->quiet, "Print nothing on success");

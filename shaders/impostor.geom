@@ -1,0 +1,48 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+// Fake branches (Nystad 5.5.4): each skeleton edge becomes a rectangle facing the eye, as wide as the branch,
+// that the fragment stage shades as the cylinder it stands for.
+
+layout(points) in;
+layout(triangle_strip, max_vertices = 4) out;
+
+#include "scene.glsl"
+
+layout(location = 0) flat in uint pointIndex[];
+
+layout(location = 0) out vec3 worldPosition;
+layout(location = 1) out vec2 acrossAndV;       // x: -1 .. 1 across the rectangle, y: bark texture v
+layout(location = 2) flat out vec3 sideways;    // unit vector across the rectangle
+layout(location = 3) flat out vec3 facing;      // unit vector from the axis towards the eye
+layout(location = 4) out float radius;
+
+void main() {
+  Impostor segment = impostors[pointIndex[0]];
+  vec3 a = (draw.model * vec4(segment.fromRadius.xyz, 1.0)).xyz;
+  vec3 b = (draw.model * vec4(segment.toRadius.xyz, 1.0)).xyz;
+  float length_ = length(b - a);
+  vec3 axis = length_ > 1e-9 ? (b - a) / length_ : vec3(0.0, 0.0, 1.0);
+  vec3 toEye = scene.cameraPos.xyz - 0.5 * (a + b);
+  vec3 side = cross(axis, toEye);
+  // Seen end-on the rectangle has no preferred side; any perpendicular keeps the count of quads exact.
+  if (dot(side, side) <= 1e-12 * max(dot(toEye, toEye), 1e-12)) side = cross(axis, abs(axis.x) < 0.9 ? vec3(1, 0, 0) : vec3(0, 1, 0));
+  side = normalize(side);
+  vec3 front = cross(side, axis);  // (axis x e) x axis: the eye direction without its part along the axis
+  // Each end reaches on by half its radius, so consecutive segments overlap where the stem bends.
+  float r0 = segment.fromRadius.w, r1 = segment.toRadius.w;
+  vec3 ends[2] = vec3[2](a - axis * (0.5 * r0), b + axis * (0.5 * r1));
+  float radii[2] = float[2](r0, r1);
+  float v[2] = float[2](segment.barkV.x, segment.barkV.y);
+  for (int corner = 0; corner < 4; ++corner) {
+    int end = corner / 2;
+    float s = (corner & 1) != 0 ? 1.0 : -1.0;
+    worldPosition = ends[end] + side * (radii[end] * s);
+    acrossAndV = vec2(s, v[end]);
+    sideways = side;
+    facing = front;
+    radius = radii[end];
+    gl_Position = scene.viewProj * vec4(worldPosition, 1.0);
+    EmitVertex();
+  }
+  EndPrimitive();
+}
