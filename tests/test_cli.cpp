@@ -1,8 +1,10 @@
 // The arbor program as a user runs it: exit codes, messages naming file and field, nothing half-written.
 #include <catch2/catch.hpp>
+#include <array>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <nlohmann/json.hpp>
 #include <sys/wait.h>
 
@@ -95,7 +97,7 @@ TEST_CASE("an unwritable output fails cleanly with 1", "[cli]") {
 }
 
 TEST_CASE("every subcommand has --help", "[cli]") {
-  for (const char* command : {"", "generate", "species", "bench", "bench generate", "bench mesh", "bench tess", "render",
+  for (const char* command : {"", "generate", "species", "bench", "bench generate", "bench mesh", "bench tess", "bench leaves", "render",
                               "textures", "accuracy"}) {
     const Result r = run(std::string(command) + " --help");
     INFO(command);
@@ -234,6 +236,30 @@ TEST_CASE("render refuses bad options with 2, naming the option, and writes noth
   CHECK_THAT(jpeg.output, Catch::Contains("PNG"));
 }
 
+TEST_CASE("bench leaves adds two triangles per leaf to the tree alone, with and without self-shadowing", "[cli][render]") {
+  const std::string csv = arbor::test::tempPath("bench-leaves.csv");
+  fs::remove(csv);
+  const Result r = run("bench leaves quaking-aspen --counts 100,1000 --shadow-leaves 0,16 --mode flat --size 64x48 --frames 1 --csv " + csv);
+  INFO(r.output);
+  REQUIRE(r.exitCode == 0);
+  CHECK_THAT(r.output, Catch::Contains("| leaves | self-shadowing |"));
+  CHECK_THAT(r.output, Catch::Contains("[5/5]"));  // progress
+  std::istringstream rows(arbor::readFile(csv));
+  std::string line;
+  std::getline(rows, line);
+  CHECK(line.rfind("leaves,shadow_leaves,triangles,", 0) == 0);
+  std::vector<std::array<unsigned long long, 3>> table;
+  while (std::getline(rows, line)) {
+    std::array<unsigned long long, 3> v{};
+    REQUIRE(std::sscanf(line.c_str(), "%llu,%llu,%llu", &v[0], &v[1], &v[2]) == 3);
+    table.push_back(v);
+  }
+  REQUIRE(table.size() == 5);
+  CHECK(table[0][0] == 0);
+  for (const auto& row : table) CHECK(row[2] == table[0][2] + 2 * row[0]);
+  CHECK(table[2][1] == 16);
+}
+
 TEST_CASE("textures and bench tess refuse values out of range with 2", "[cli]") {
   const Result size = run("textures --size 100 --out " + arbor::test::tempPath("textures-bad"));
   CHECK(size.exitCode == 2);
@@ -244,4 +270,10 @@ TEST_CASE("textures and bench tess refuse values out of range with 2", "[cli]") 
   const Result modes = run("bench tess palm --modes acc,magic");
   CHECK(modes.exitCode == 2);
   CHECK_THAT(modes.output, Catch::Contains("--modes"));
+  const Result counts = run("bench leaves palm --counts 10,many");
+  CHECK(counts.exitCode == 2);
+  CHECK_THAT(counts.output, Catch::Contains("--counts"));
+  const Result tooMany = run("bench leaves palm --counts 90000000");
+  CHECK(tooMany.exitCode == 2);
+  CHECK_THAT(tooMany.output, Catch::Contains("--counts"));
 }

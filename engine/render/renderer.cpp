@@ -256,7 +256,11 @@ void TreeRenderer::draw(VkCommandBuffer cmd, VkExtent2D extent, const RenderSett
     ++lastDraws_;
   };
   if (s.impostors && tree_->impostorCount > 0 && pipelines_.impostors) drawPoints(pipelines_.impostors, tree_->impostorCount);
-  if (s.leaves && tree_->leafCount > 0 && pipelines_.leaves) drawPoints(pipelines_.leaves, tree_->leafCount);
+  if (s.leaves && tree_->leafCount > 0 && pipelines_.leaves) {
+    // The geometry stage keeps a leaf when its rank (i + 1/2) / N is within the density: the rest need no draw.
+    const double kept = std::clamp(static_cast<double>(s.leafDensity), 0.0, 1.0) * tree_->leafCount;
+    drawPoints(pipelines_.leaves, std::min(tree_->leafCount, static_cast<std::uint32_t>(kept + 0.5) + 1u));
+  }
   if (statistics_) vkCmdEndQuery(cmd, statistics_, 0);
   if (timestamps_) vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, timestamps_, 1);
   if (s.wireframe && pipelines_.wireframe[mode]) drawTree(pipelines_.wireframe[mode]);

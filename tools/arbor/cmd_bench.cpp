@@ -112,6 +112,7 @@ void addBenchCommand(CLI::App& app, Action& action) {
   mesh->callback([m, &action] { action = [m] { return runBenchMesh(*m); }; });
 
   addBenchTessCommand(*bench, action);
+  addBenchLeavesCommand(*bench, action);
 }
 
 }  // namespace arbor::cli

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "assets.hpp"
+#include "bench_support.hpp"
 #include "commands.hpp"
 #include "growth/weber_penn.hpp"
 #include "mesh/tree_mesh.hpp"
@@ -37,34 +38,6 @@ struct Cell {
   render::RenderSettings settings;
 };
 
-std::vector<std::string> splitList(const std::string& text) {
-  std::vector<std::string> items;
-  std::stringstream in(text);
-  std::string item;
-  while (std::getline(in, item, ',')) {
-    if (!item.empty()) items.push_back(item);
-  }
-  return items;
-}
-
-std::vector<float> parseNumbers(const std::string& text, const std::string& field, float lo, float hi) {
-  std::vector<float> values;
-  for (const std::string& item : splitList(text)) {
-    float v = 0.0f;
-    std::size_t used = 0;
-    try {
-      v = std::stof(item, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (used != item.size() || !(v >= lo && v <= hi)) {
-      throw SpeciesError(item, field, "allowed: comma-separated numbers from " + std::to_string(lo) + " to " + std::to_string(hi));
-    }
-    values.push_back(v);
-  }
-  return values;
-}
-
 std::vector<Cell> makeCells(const BenchTessOptions& o) {
   const std::vector<float> factors = parseNumbers(o.factors, "--factors", 1.0f, 64.0f);
   const std::vector<float> targets = parseNumbers(o.adaptive, "--adaptive", 0.5f, 1000.0f);
@@ -94,16 +67,6 @@ std::vector<Cell> makeCells(const BenchTessOptions& o) {
   }
   if (cells.empty()) throw SpeciesError(o.modes, "--modes", "no mode given; allowed: flat, pn, acc, acc+disp, pn+disp");
   return cells;
-}
-
-struct Figures {
-  double median = 0.0, lo = 0.0, hi = 0.0;
-};
-
-Figures summarize(std::vector<double> v) {
-  if (v.empty()) return {};
-  std::sort(v.begin(), v.end());
-  return {v[v.size() / 2], v.front(), v.back()};
 }
 
 int runBenchTess(const BenchTessOptions& o) {
@@ -144,19 +107,14 @@ int runBenchTess(const BenchTessOptions& o) {
   for (std::size_t i = 0; i < cells.size(); ++i) {
     const Cell& c = cells[i];
     std::fprintf(stderr, "arbor bench tess: [%zu/%zu] %s\n", i + 1, cells.size(), c.label.c_str());
-    std::vector<double> cpu, gpu;
-    render::FrameResult frame = session.render(camera, c.settings);  // warm-up
-    for (int f = 0; f < o.frames; ++f) {
-      frame = session.render(camera, c.settings);
-      cpu.push_back(frame.cpuMilliseconds);
-      if (frame.gpu.hasTime) gpu.push_back(frame.gpu.gpuMilliseconds);
-    }
-    const Figures fc = summarize(cpu), fg = summarize(gpu);
-    const double seconds = (hostTimed || gpu.empty() ? fc.median : fg.median) * 1e-3;
+    const TimedFrames timed = timeFrames(session, camera, c.settings, o.frames);
+    const render::FrameResult& frame = timed.last;
+    const Figures &fc = timed.cpu, &fg = timed.gpu;
+    const double seconds = (hostTimed || !timed.hasGpu ? fc.median : fg.median) * 1e-3;
     const double rate = seconds > 0.0 ? static_cast<double>(frame.gpu.triangles) / seconds * 1e-6 : 0.0;
     std::printf("| %s | %llu | %.2f (%.2f-%.2f) | ", c.label.c_str(), static_cast<unsigned long long>(frame.gpu.triangles),
                 fc.median, fc.lo, fc.hi);
-    if (gpu.empty()) std::printf("- | ");
+    if (!timed.hasGpu) std::printf("- | ");
     else std::printf("%.3f (%.3f-%.3f)%s | ", fg.median, fg.lo, fg.hi, hostTimed ? " *" : "");
     std::printf("%.2f | %zu |\n", rate, session.tree()->bytes);
     std::fflush(stdout);

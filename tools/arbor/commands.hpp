@@ -15,6 +15,7 @@ void addGenerateCommand(CLI::App& app, Action& action);
 void addSpeciesCommand(CLI::App& app, Action& action);
 void addBenchCommand(CLI::App& app, Action& action);
 void addBenchTessCommand(CLI::App& bench, Action& action);  // under `bench`
+void addBenchLeavesCommand(CLI::App& bench, Action& action);  // under `bench`
 void addRenderCommand(CLI::App& app, Action& action);
 void addTexturesCommand(CLI::App& app, Action& action);
 void addAccuracyCommand(CLI::App& app, Action& action);

@@ -1,0 +1,28 @@
+#pragma once
+// Shared by the Vulkan benchmarks (bench tess, bench leaves): list options, timing a setting over frames.
+#include <string>
+#include <vector>
+
+#include "render/render_session.hpp"
+
+namespace arbor::cli {
+
+// "a,b,c" -> {"a", "b", "c"}; empty items are dropped.
+std::vector<std::string> splitList(const std::string& text);
+// Comma-separated numbers, each within [lo, hi]; anything else is a SpeciesError naming `field`.
+std::vector<float> parseNumbers(const std::string& text, const std::string& field, float lo, float hi);
+
+struct Figures {
+  double median = 0.0, lo = 0.0, hi = 0.0;
+};
+
+struct TimedFrames {
+  Figures cpu, gpu;             // milliseconds: host (record, submit, wait) and timestamps
+  bool hasGpu = false;
+  render::FrameResult last;
+};
+
+// One warm-up frame, then `frames` timed ones.
+TimedFrames timeFrames(render::RenderSession& session, const render::Camera& camera, const render::RenderSettings& settings, int frames);
+
+}  // namespace arbor::cli
