@@ -197,6 +197,8 @@ TEST_CASE("mesh levels leave the deeper stems out and the mesh closed", "[mesh]"
   const MeshTopologyReport r = checkTopology(tree.mesh);
   CHECK(r.boundaryEdges == 0);
   CHECK(r.eulerCharacteristic == 2);
+  // Branch points of left-out children get no cross sections: as light as the tree grown with two levels.
+  CHECK(tree.mesh.quads.size() == buildTreeMesh(grow(test::loadPreset("black-tupelo"), 1, 2)).mesh.quads.size());
 }
 
 TEST_CASE("fake-branch segments are exactly the skeleton edges the mesh leaves out, chained with their radii",

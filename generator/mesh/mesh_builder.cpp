@@ -392,6 +392,8 @@ class Builder {
       // Intermediate nodes pin the surface next to a joint; the slab's own cross sections do that here.
       const NodeKind kind = sk_.nodes[static_cast<std::size_t>(node)].kind;
       if (kind == NodeKind::Before || kind == NodeKind::After) continue;
+      // A branch point whose children are all left to impostors needs no cross section of its own.
+      if (kind == NodeKind::Attachment && stemsAt_[static_cast<std::size_t>(node)].empty()) continue;
       addPlain(poly.arcLength(i));
     }
     for (std::size_t j = 0; j < slabs.size(); ++j) {
