@@ -10,12 +10,19 @@ out="$root/out"
 mkdir -p "$out"
 "$arbor" generate black-tupelo --seed 1 --quiet --out "$out/black-tupelo.json"
 "$arbor" generate black-tupelo --seed 1 --out "$out/black-tupelo.glb"
-# The whole tree, adaptive ACC; a close-up of the displaced bark; the tessellation itself in wireframe.
-"$arbor" render black-tupelo --seed 1 --mode acc --adaptive 6 --msaa 4 --size 960x1200 --out "$out/black-tupelo.png"
+# The whole tree in leaf, adaptive ACC, self-shadowed; a close-up of the displaced bark; the tessellation
+# itself in wireframe; an aspen against a low sun (back-lit leaves); an oak whose third level is fake branches.
+"$arbor" render black-tupelo --seed 1 --mode acc --adaptive 6 --msaa 4 --size 960x1200 --leaves --shadow-leaves 250 \
+  --light 25,40 --out "$out/black-tupelo.png"
 "$arbor" render black-tupelo --seed 1 --mode acc --adaptive 4 --displace 0.3 --msaa 4 --size 960x1200 \
   --camera 1.5,-3.5,1.6,0,0,1.4,50 --out "$out/black-tupelo-bark.png"
 "$arbor" render black-tupelo --seed 1 --mode acc --tess 6 --wireframe --size 960x1200 \
   --camera 2.5,-4,4,0,0,4.5,40 --out "$out/black-tupelo-wireframe.png"
-"$arbor" render palm --mode acc --adaptive 6 --msaa 4 --size 960x1200 --out "$out/palm.png"
+"$arbor" render quaking-aspen --seed 1 --mode acc --adaptive 6 --msaa 4 --size 960x1200 --leaves --light 205,15 \
+  --out "$out/quaking-aspen-backlit.png"
+"$arbor" render ca-black-oak --seed 1 --levels 2 --impostor-levels 1 --mode acc --adaptive 6 --msaa 4 --size 960x1200 \
+  --leaves --shadow-leaves 250 --light 25,40 --out "$out/ca-black-oak-fake-branches.png"
+"$arbor" render palm --mode acc --adaptive 6 --msaa 4 --size 960x1200 --leaves --out "$out/palm.png"
 echo "demo: skeleton $out/black-tupelo.json, mesh $out/black-tupelo.glb"
-echo "demo: pictures $out/black-tupelo.png, $out/black-tupelo-bark.png, $out/black-tupelo-wireframe.png, $out/palm.png"
+echo "demo: pictures $out/black-tupelo.png, $out/black-tupelo-bark.png, $out/black-tupelo-wireframe.png,"
+echo "      $out/quaking-aspen-backlit.png, $out/ca-black-oak-fake-branches.png, $out/palm.png"
