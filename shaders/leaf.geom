@@ -25,7 +25,7 @@ void main() {
   // the distance (as the crown's area on screen); the last tenth of the kept ones shrink away.
   float kept = scene.leafLod.y;
   if (scene.leafLod.x > 0.0) kept *= min(1.0, pow(scene.leafLod.x / max(eyeDistance, 1e-3), 2.0));
-  float rank = (float(i) + 0.5) / max(scene.leafLod.z, 1.0);
+  float rank = (float(i) + 0.5) / max(float(draw.leafCount), 1.0);
   if (rank > kept) return;
   float size = scene.leafLod.x > 0.0 ? clamp((kept - rank) / (0.1 * kept), 0.0, 1.0) : 1.0;
 
@@ -48,7 +48,7 @@ void main() {
   // Self-shadowing against the first leaves of the random order: c = saturate(1 - 100 (b_dot - 0.99)).
   vec3 l = normalize(scene.lightDir.xyz);
   float c = 1.0;
-  uint count = min(uint(scene.leafLod.w), uint(scene.leafLod.z));
+  uint count = min(uint(scene.leafLod.w), draw.leafCount);
   for (uint j = 0u; j < count; ++j) {
     if (j == i) continue;
     vec3 towards = (draw.model * vec4(leaves[j].positionLength.xyz, 1.0)).xyz - base;

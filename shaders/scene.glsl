@@ -14,7 +14,7 @@ layout(set = 0, binding = 0, std140) uniform Scene {
   vec4 ground;        // rgb, distance from the eye at which it has faded into the horizon (metres)
   uvec4 flags;        // x: capture evaluated points, y: wireframe colouring, z: back faces in magenta
   vec4 lens;          // x: pixels covered by one unit of length at unit distance
-  vec4 leafLod;       // distance (m) up to which all leaves show (0: no thinning), density, leaf count, shadow leaves
+  vec4 leafLod;       // distance (m) up to which all leaves show (0: no thinning), density, unused, shadow leaves
 } scene;
 
 struct TreeVertex {
@@ -53,6 +53,7 @@ layout(set = 0, binding = 5) uniform sampler2D barkHeight;
 layout(push_constant) uniform Draw {
   mat4 model;
   uint patchBase;  // first patch of this draw: gl_PrimitiveID restarts at 0 for every draw
+  uint leafCount;  // this tree's leaves (trees of a forest differ)
 } draw;
 
 const float PI = 3.14159265358979;

@@ -22,11 +22,12 @@ struct Pipelines {
   void destroy(VkDevice device);
 };
 
-// Push constants: the tree's model matrix and the first patch of the draw.
+// Push constants: the tree's model matrix, the first patch of the draw, the tree's leaf count.
 struct DrawConstants {
   float model[16];
   std::uint32_t patchBase;
-  std::uint32_t pad[3];
+  std::uint32_t leafCount;
+  std::uint32_t pad[2];
 };
 
 Pipelines createPipelines(const vk::VulkanContext& context, VkRenderPass renderPass, VkSampleCountFlagBits samples);

@@ -18,6 +18,10 @@ void RenderSession::setTree(const QuadMesh& mesh, const PatchSet& patches, const
 }
 
 FrameResult RenderSession::render(const Camera& camera, const RenderSettings& settings) {
+  return render(camera, settings, tree_ ? std::vector<TreeInstance>{{0, plantedModel(*tree_)}} : std::vector<TreeInstance>{});
+}
+
+FrameResult RenderSession::render(const Camera& camera, const RenderSettings& settings, const std::vector<TreeInstance>& instances) {
   const auto start = std::chrono::steady_clock::now();
   context_.submitAndWait([&](VkCommandBuffer cmd) {
     renderer_.beginFrame(cmd, camera, target_.extent(), settings);
@@ -31,7 +35,7 @@ FrameResult RenderSession::render(const Camera& camera, const RenderSettings& se
     begin.clearValueCount = static_cast<std::uint32_t>(clear.size());
     begin.pClearValues = clear.data();
     vkCmdBeginRenderPass(cmd, &begin, VK_SUBPASS_CONTENTS_INLINE);
-    renderer_.draw(cmd, target_.extent(), settings, tree_ ? plantedModel(*tree_) : glm::mat4(1.0f));
+    renderer_.draw(cmd, target_.extent(), settings, instances);
     vkCmdEndRenderPass(cmd);
     target_.recordReadback(cmd);
   });

@@ -22,6 +22,8 @@ class RenderSession {
                const std::vector<ImpostorSegment>& impostors = {});
   const GpuTree* tree() const { return tree_.get(); }
   FrameResult render(const Camera& camera, const RenderSettings& settings);
+  // The renderer's trees (set with renderer().setTrees) at these places: a forest.
+  FrameResult render(const Camera& camera, const RenderSettings& settings, const std::vector<TreeInstance>& instances);
   Image image() const { return target_.readback(); }
   TreeRenderer& renderer() { return renderer_; }
   VkExtent2D extent() const { return target_.extent(); }

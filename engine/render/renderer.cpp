@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <stdexcept>
+#include <string>
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -61,19 +63,14 @@ TreeRenderer::TreeRenderer(const vk::VulkanContext& context, VkRenderPass render
   setCapture(0);
 
   const VkDevice device = context.device();
-  const std::array<VkDescriptorPoolSize, 3> sizes{{{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1},
-                                                   {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 7},
-                                                   {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 3}}};
+  const std::array<VkDescriptorPoolSize, 3> sizes{{{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kMaxTrees},
+                                                   {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 7 * kMaxTrees},
+                                                   {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 3 * kMaxTrees}}};
   VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
-  poolInfo.maxSets = 1;
+  poolInfo.maxSets = kMaxTrees;
   poolInfo.poolSizeCount = static_cast<std::uint32_t>(sizes.size());
   poolInfo.pPoolSizes = sizes.data();
   vk::check(vkCreateDescriptorPool(device, &poolInfo, nullptr, &pool_), "vkCreateDescriptorPool");
-  VkDescriptorSetAllocateInfo alloc{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
-  alloc.descriptorPool = pool_;
-  alloc.descriptorSetCount = 1;
-  alloc.pSetLayouts = &pipelines_.setLayout;
-  vk::check(vkAllocateDescriptorSets(device, &alloc, &set_), "vkAllocateDescriptorSets");
   setTree(nullptr);
 
   if (context.features().pipelineStatisticsQuery) {
@@ -108,7 +105,7 @@ void TreeRenderer::setCapture(std::uint32_t capacity) {
                             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
   std::memset(capture_.mapped(), 0, kCaptureHeader);
   static_cast<std::uint32_t*>(capture_.mapped())[1] = capacity;
-  if (set_) setTree(tree_);
+  if (!sets_.empty()) setTrees(trees_);
 }
 
 std::vector<CapturedPoint> TreeRenderer::captured() const {
@@ -125,7 +122,28 @@ std::vector<CapturedPoint> TreeRenderer::captured() const {
 }
 
 void TreeRenderer::setTree(const GpuTree* tree) {
-  tree_ = tree;
+  setTrees(tree ? std::vector<const GpuTree*>{tree} : std::vector<const GpuTree*>{});
+}
+
+void TreeRenderer::setTrees(const std::vector<const GpuTree*>& trees) {
+  if (trees.size() > kMaxTrees) {
+    throw std::runtime_error("a scene may hold at most " + std::to_string(kMaxTrees) + " distinct trees, not " + std::to_string(trees.size()));
+  }
+  trees_ = trees;
+  const std::size_t wanted = std::max<std::size_t>(1, trees.size());  // sky and ground need a set without trees too
+  while (sets_.size() < wanted) {
+    VkDescriptorSetAllocateInfo alloc{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+    alloc.descriptorPool = pool_;
+    alloc.descriptorSetCount = 1;
+    alloc.pSetLayouts = &pipelines_.setLayout;
+    VkDescriptorSet set = VK_NULL_HANDLE;
+    vk::check(vkAllocateDescriptorSets(context_.device(), &alloc, &set), "vkAllocateDescriptorSets");
+    sets_.push_back(set);
+  }
+  for (std::size_t i = 0; i < wanted; ++i) writeSet(sets_[i], i < trees.size() ? trees[i] : nullptr);
+}
+
+void TreeRenderer::writeSet(VkDescriptorSet set, const GpuTree* tree) {
   // Without a tree the storage bindings still point at a valid buffer: every binding is always written.
   const VkBuffer fallback = capture_.handle();
   const VkDescriptorBufferInfo sceneInfo{scene_.handle(), 0, VK_WHOLE_SIZE};
@@ -141,7 +159,7 @@ void TreeRenderer::setTree(const GpuTree* tree) {
   const VkDescriptorImageInfo heightInfo{sampler_, barkHeight_.view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
   auto write = [&](std::uint32_t binding, VkDescriptorType type, const VkDescriptorBufferInfo* b, const VkDescriptorImageInfo* i) {
     VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-    w.dstSet = set_;
+    w.dstSet = set;
     w.dstBinding = binding;
     w.descriptorCount = 1;
     w.descriptorType = type;
@@ -190,11 +208,13 @@ void TreeRenderer::beginFrame(VkCommandBuffer cmd, const Camera& camera, VkExten
   u.skyTop = glm::vec4(0.32f, 0.52f, 0.82f, 1.0f);
   u.skyHorizon = glm::vec4(0.78f, 0.85f, 0.92f, 1.0f);
   // The ground fades fully into the horizon colour at this distance from the eye (and ends at four times it).
-  const float groundRadius = tree_ ? std::clamp(10.0f * glm::length(tree_->bounds.hi - tree_->bounds.lo), 60.0f, 400.0f) : 100.0f;
+  const float groundRadius = s.groundRadius > 0.0f ? s.groundRadius
+                             : !trees_.empty() ? std::clamp(10.0f * glm::length(trees_[0]->bounds.hi - trees_[0]->bounds.lo), 60.0f, 400.0f)
+                                               : 100.0f;
   u.ground = glm::vec4(0.30f, 0.36f, 0.20f, groundRadius);
   u.flags = glm::uvec4(captureCapacity_ > 0 ? 1u : 0u, 0u, s.revealBackFaces ? 1u : 0u, 0u);
   u.leafLod = glm::vec4(s.leafLodDistance, std::clamp(s.leafDensity, 0.0f, 1.0f),
-                        static_cast<float>(tree_ ? tree_->leafCount : 0u), static_cast<float>(s.shadowLeaves));
+                        0.0f, static_cast<float>(s.shadowLeaves));
   u.lens = glm::vec4(0.5f * static_cast<float>(extent.height) / std::tan(0.5f * camera.fovY), 0.0f, 0.0f, 0.0f);
   std::memcpy(scene_.mapped(), &u, sizeof u);
   if (captureCapacity_ > 0) static_cast<std::uint32_t*>(capture_.mapped())[0] = 0;
@@ -203,39 +223,49 @@ void TreeRenderer::beginFrame(VkCommandBuffer cmd, const Camera& camera, VkExten
 }
 
 void TreeRenderer::draw(VkCommandBuffer cmd, VkExtent2D extent, const RenderSettings& s, const glm::mat4& model) {
+  draw(cmd, extent, s, trees_.empty() ? std::vector<TreeInstance>{} : std::vector<TreeInstance>{{0, model}});
+}
+
+void TreeRenderer::draw(VkCommandBuffer cmd, VkExtent2D extent, const RenderSettings& s, const std::vector<TreeInstance>& instances) {
   const VkViewport viewport{0.0f, 0.0f, static_cast<float>(extent.width), static_cast<float>(extent.height), 0.0f, 1.0f};
   const VkRect2D scissor{{0, 0}, extent};
   vkCmdSetViewport(cmd, 0, 1, &viewport);
   vkCmdSetScissor(cmd, 0, 1, &scissor);
-  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.layout, 0, 1, &set_, 0, nullptr);
-  DrawConstants constants{};
-  std::memcpy(constants.model, glm::value_ptr(model), sizeof constants.model);
   const VkShaderStageFlags stages = pipelines_.pushStages;
-  vkCmdPushConstants(cmd, pipelines_.layout, stages, 0, sizeof constants, &constants);
-
+  DrawConstants constants{};
+  auto bindTree = [&](std::uint32_t tree, const glm::mat4& model) {
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.layout, 0, 1, &sets_[tree], 0, nullptr);
+    std::memcpy(constants.model, glm::value_ptr(model), sizeof constants.model);
+    constants.patchBase = 0;
+    constants.leafCount = tree < trees_.size() ? trees_[tree]->leafCount : 0u;
+    vkCmdPushConstants(cmd, pipelines_.layout, stages, 0, sizeof constants, &constants);
+  };
+  bindTree(0, glm::mat4(1.0f));
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.sky);
   vkCmdDraw(cmd, 3, 1, 0, 0);
   if (s.ground) {
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.ground);
     vkCmdDraw(cmd, 6, 1, 0, 0);
   }
-  drewTree_ = tree_ != nullptr && tree_->patchCount > 0;
+  drewTree_ = false;
   lastDraws_ = 0;
+  for (const TreeInstance& instance : instances) {
+    if (instance.tree >= trees_.size()) throw std::out_of_range("tree instance names tree " + std::to_string(instance.tree));
+    drewTree_ = drewTree_ || trees_[instance.tree]->patchCount > 0;
+  }
   if (!drewTree_) return;
 
   const auto mode = static_cast<std::size_t>(s.mode);
   const std::uint32_t chunk = primitivesPerDraw(s);
-  if (timestamps_) vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, timestamps_, 0);
-  if (statistics_) vkCmdBeginQuery(cmd, statistics_, 0, 0);
-  auto drawTree = [&](VkPipeline pipeline) {
+  auto drawMesh = [&](const GpuTree& tree, VkPipeline pipeline) {
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
     if (s.mode == RenderMode::Flat) {
       const VkDeviceSize offset = 0;
-      const VkBuffer vertices = tree_->vertices.handle();
+      const VkBuffer vertices = tree.vertices.handle();
       vkCmdBindVertexBuffers(cmd, 0, 1, &vertices, &offset);
-      vkCmdBindIndexBuffer(cmd, tree_->indices.handle(), 0, VK_INDEX_TYPE_UINT32);
+      vkCmdBindIndexBuffer(cmd, tree.indices.handle(), 0, VK_INDEX_TYPE_UINT32);
     }
-    const std::uint32_t total = s.mode == RenderMode::ACC ? tree_->patchCount : tree_->triangles;
+    const std::uint32_t total = s.mode == RenderMode::ACC ? tree.patchCount : tree.triangles;
     for (std::uint32_t base = 0; base < total; base += chunk) {
       const std::uint32_t count = std::min(chunk, total - base);
       constants.patchBase = base;
@@ -247,7 +277,6 @@ void TreeRenderer::draw(VkCommandBuffer cmd, VkExtent2D extent, const RenderSett
       ++lastDraws_;
     }
   };
-  drawTree(s.revealBackFaces ? pipelines_.twoSided[mode] : pipelines_.tree[mode]);
   auto drawPoints = [&](VkPipeline pipeline, std::uint32_t count) {
     constants.patchBase = 0;
     vkCmdPushConstants(cmd, pipelines_.layout, stages, 0, sizeof constants, &constants);
@@ -255,15 +284,28 @@ void TreeRenderer::draw(VkCommandBuffer cmd, VkExtent2D extent, const RenderSett
     vkCmdDraw(cmd, count, 1, 0, 0);
     ++lastDraws_;
   };
-  if (s.impostors && tree_->impostorCount > 0 && pipelines_.impostors) drawPoints(pipelines_.impostors, tree_->impostorCount);
-  if (s.leaves && tree_->leafCount > 0 && pipelines_.leaves) {
-    // The geometry stage keeps a leaf when its rank (i + 1/2) / N is within the density: the rest need no draw.
-    const double kept = std::clamp(static_cast<double>(s.leafDensity), 0.0, 1.0) * tree_->leafCount;
-    drawPoints(pipelines_.leaves, std::min(tree_->leafCount, static_cast<std::uint32_t>(kept + 0.5) + 1u));
+
+  if (timestamps_) vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, timestamps_, 0);
+  if (statistics_) vkCmdBeginQuery(cmd, statistics_, 0, 0);
+  for (const TreeInstance& instance : instances) {
+    const GpuTree& tree = *trees_[instance.tree];
+    bindTree(instance.tree, instance.model);
+    drawMesh(tree, s.revealBackFaces ? pipelines_.twoSided[mode] : pipelines_.tree[mode]);
+    if (s.impostors && tree.impostorCount > 0 && pipelines_.impostors) drawPoints(pipelines_.impostors, tree.impostorCount);
+    if (s.leaves && tree.leafCount > 0 && pipelines_.leaves) {
+      // The geometry stage keeps a leaf when its rank (i + 1/2) / N is within the density: the rest need no draw.
+      const double kept = std::clamp(static_cast<double>(s.leafDensity), 0.0, 1.0) * tree.leafCount;
+      drawPoints(pipelines_.leaves, std::min(tree.leafCount, static_cast<std::uint32_t>(kept + 0.5) + 1u));
+    }
   }
   if (statistics_) vkCmdEndQuery(cmd, statistics_, 0);
   if (timestamps_) vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, timestamps_, 1);
-  if (s.wireframe && pipelines_.wireframe[mode]) drawTree(pipelines_.wireframe[mode]);
+  if (s.wireframe && pipelines_.wireframe[mode]) {
+    for (const TreeInstance& instance : instances) {
+      bindTree(instance.tree, instance.model);
+      drawMesh(*trees_[instance.tree], pipelines_.wireframe[mode]);
+    }
+  }
 }
 
 FrameStats TreeRenderer::stats() const {

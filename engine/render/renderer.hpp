@@ -3,6 +3,7 @@
 // where the driver needs it, and measures what the GPU did (triangles generated, time).
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
+#include <vector>
 
 #include "camera.hpp"
 #include "gpu_tree.hpp"
@@ -34,6 +35,7 @@ struct RenderSettings {
   float leafLodDistance = 0.0f;   // > 0: all leaves up to this distance (m), then thinning with distance squared
   std::uint32_t shadowLeaves = 0; // self-shadowing: each leaf tests the first this many leaves
   bool impostors = false;         // draw the fake branches (needs geometry shaders)
+  float groundRadius = 0.0f;     // > 0: the ground fades into the horizon this far from the eye (forests)
   bool revealBackFaces = false;  // draw back faces too, in magenta: on a closed surface any that shows is a crack
   std::uint32_t patchesPerDraw = 0;  // > 0: split tree draws into this many patches (tests); 0: what the driver needs
   glm::vec3 lightDirection{0.45f, -0.6f, 0.75f};
@@ -56,6 +58,12 @@ struct CapturedPoint {
   glm::vec3 uvw;        // texture coordinates there: seam-safe u, v, flip coordinate
 };
 
+// One tree of a scene: which of the renderer's trees (setTrees) it is and where it stands.
+struct TreeInstance {
+  std::uint32_t tree = 0;
+  glm::mat4 model{1.0f};
+};
+
 class TreeRenderer {
  public:
   TreeRenderer(const vk::VulkanContext& context, VkRenderPass renderPass, VkSampleCountFlagBits samples,
@@ -64,7 +72,9 @@ class TreeRenderer {
   TreeRenderer(const TreeRenderer&) = delete;
   TreeRenderer& operator=(const TreeRenderer&) = delete;
 
-  void setTree(const GpuTree* tree);
+  static constexpr std::uint32_t kMaxTrees = 64;
+  void setTree(const GpuTree* tree);                        // one tree, or none (sky and ground only)
+  void setTrees(const std::vector<const GpuTree*>& trees);  // a scene's distinct trees, at most kMaxTrees
   // Leaves and fake branches are expanded from points by geometry shaders, which not every device has.
   bool drawsLeaves() const { return pipelines_.leaves != VK_NULL_HANDLE; }
   // Captures up to `capacity` evaluated ACC points in the next frames (0 turns it off).
@@ -73,8 +83,10 @@ class TreeRenderer {
 
   // Before the render pass begins: reset the queries, upload the scene.
   void beginFrame(VkCommandBuffer cmd, const Camera& camera, VkExtent2D extent, const RenderSettings& settings);
-  // Inside the render pass.
+  // Inside the render pass: sky, ground and the first tree at `model`.
   void draw(VkCommandBuffer cmd, VkExtent2D extent, const RenderSettings& settings, const glm::mat4& model = glm::mat4(1.0f));
+  // Sky, ground and every instance (statistics and time cover all of them).
+  void draw(VkCommandBuffer cmd, VkExtent2D extent, const RenderSettings& settings, const std::vector<TreeInstance>& instances);
   // After the frame's commands have completed.
   FrameStats stats() const;
 
@@ -82,6 +94,8 @@ class TreeRenderer {
   std::uint32_t primitivesPerDraw(const RenderSettings& settings) const;
 
  private:
+  void writeSet(VkDescriptorSet set, const GpuTree* tree);
+
   const vk::VulkanContext& context_;
   Pipelines pipelines_;
   vk::GpuImage barkColor_, barkHeight_, leafAtlas_;
@@ -90,9 +104,9 @@ class TreeRenderer {
   vk::Buffer capture_;
   std::uint32_t captureCapacity_ = 0;
   VkDescriptorPool pool_ = VK_NULL_HANDLE;
-  VkDescriptorSet set_ = VK_NULL_HANDLE;
+  std::vector<VkDescriptorSet> sets_;  // one per tree; the first also serves sky and ground
   VkQueryPool statistics_ = VK_NULL_HANDLE, timestamps_ = VK_NULL_HANDLE;
-  const GpuTree* tree_ = nullptr;
+  std::vector<const GpuTree*> trees_;
   std::uint32_t lastDraws_ = 0;
   bool drewTree_ = false;
 };

@@ -49,16 +49,6 @@ struct RenderOptions {
   bool quiet = false;
 };
 
-// "azimuth,elevation" in degrees -> a unit vector towards the sun (azimuth measured like the camera's).
-glm::vec3 parseLight(const std::string& text) {
-  float az = 0.0f, el = 0.0f;
-  char comma = 0, rest = 0;
-  if (std::sscanf(text.c_str(), "%f%c%f%c", &az, &comma, &el, &rest) != 3 || comma != ',' || !(el >= -90.0f && el <= 90.0f) ||
-      !std::isfinite(az)) {
-    throw SpeciesError(text, "--light", "expected AZIMUTH,ELEVATION in degrees, elevation from -90 to 90, e.g. 30,45");
-  }
-  return render::sunDirection(az, el);
-}
 
 int runRender(const RenderOptions& o) {
   render::RenderSettings settings;

@@ -17,6 +17,7 @@ void addBenchCommand(CLI::App& app, Action& action);
 void addBenchTessCommand(CLI::App& bench, Action& action);  // under `bench`
 void addBenchLeavesCommand(CLI::App& bench, Action& action);  // under `bench`
 void addRenderCommand(CLI::App& app, Action& action);
+void addViewCommand(CLI::App& app, Action& action);
 void addTexturesCommand(CLI::App& app, Action& action);
 void addAccuracyCommand(CLI::App& app, Action& action);
 

@@ -44,6 +44,7 @@ int main(int argc, char** argv) {
   addSpeciesCommand(app, action);
   addBenchCommand(app, action);
   addRenderCommand(app, action);
+  addViewCommand(app, action);
   addTexturesCommand(app, action);
   addAccuracyCommand(app, action);
   try {

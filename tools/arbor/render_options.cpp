@@ -1,5 +1,6 @@
 #include "render_options.hpp"
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 
@@ -37,6 +38,16 @@ bool reportValidationErrors(const vk::VulkanContext& context) {
   if (context.validationErrors() == 0) return false;
   std::fprintf(stderr, "arbor: error: %u Vulkan validation errors (see above)\n", context.validationErrors());
   return true;
+}
+
+glm::vec3 parseLight(const std::string& text) {
+  float az = 0.0f, el = 0.0f;
+  char comma = 0, rest = 0;
+  if (std::sscanf(text.c_str(), "%f%c%f%c", &az, &comma, &el, &rest) != 3 || comma != ',' || !(el >= -90.0f && el <= 90.0f) ||
+      !std::isfinite(az)) {
+    throw SpeciesError(text, "--light", "expected AZIMUTH,ELEVATION in degrees, elevation from -90 to 90, e.g. 30,45");
+  }
+  return render::sunDirection(az, el);
 }
 
 }  // namespace arbor::cli

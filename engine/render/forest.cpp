@@ -1,0 +1,151 @@
+#include "forest.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <random>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "growth/weber_penn.hpp"
+#include "mesh/tree_mesh.hpp"
+
+namespace arbor::render {
+
+namespace {
+
+struct Plane {
+  glm::vec3 normal;
+  float offset;
+};
+
+// The six planes of a Vulkan view-projection (depth 0..1), pointing inwards (Gribb & Hartmann).
+std::array<Plane, 6> frustumPlanes(const glm::mat4& m) {
+  const glm::vec4 r0(m[0][0], m[1][0], m[2][0], m[3][0]), r1(m[0][1], m[1][1], m[2][1], m[3][1]);
+  const glm::vec4 r2(m[0][2], m[1][2], m[2][2], m[3][2]), r3(m[0][3], m[1][3], m[2][3], m[3][3]);
+  const glm::vec4 rows[6] = {r3 + r0, r3 - r0, r3 + r1, r3 - r1, r2, r3 - r2};
+  std::array<Plane, 6> planes{};
+  for (int i = 0; i < 6; ++i) {
+    const float length = glm::length(glm::vec3(rows[i]));
+    planes[static_cast<std::size_t>(i)] = {glm::vec3(rows[i]) / length, rows[i].w / length};
+  }
+  return planes;
+}
+
+glm::mat4 placementModel(const ForestPlacement& p, float plantingDepth) {
+  const glm::mat4 at = glm::translate(glm::mat4(1.0f), glm::vec3(p.position, -plantingDepth));
+  return glm::rotate(at, p.rotation, glm::vec3(0.0f, 0.0f, 1.0f));
+}
+
+}  // namespace
+
+std::vector<ForestPlacement> placeTrees(const std::vector<float>& crownRadii, std::uint32_t count, std::uint64_t seed, float& areaRadius) {
+  std::vector<ForestPlacement> placed;
+  if (crownRadii.empty() || count == 0) return placed;
+  std::mt19937_64 random(seed * 0x9e3779b97f4a7c15ull + 0x5eed);
+  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+  double area = 0.0;
+  for (std::uint32_t i = 0; i < count; ++i) area += std::pow(crownRadii[i % crownRadii.size()], 2.0);
+  // Crowns cover about a third of the disc: dense enough to walk through a forest, sparse enough to place.
+  areaRadius = static_cast<float>(std::sqrt(area / 0.33));
+  for (std::uint32_t i = 0; i < count; ++i) {
+    const auto kind = static_cast<std::uint32_t>(i % crownRadii.size());
+    const float r = crownRadii[kind];
+    ForestPlacement p{kind, glm::vec2(0.0f), unit(random) * 2.0f * std::numbers::pi_v<float>};
+    for (int attempt = 0; i > 0; ++attempt) {
+      if (attempt > 0 && attempt % 500 == 0) areaRadius *= 1.1f;  // too crowded: widen the forest
+      const float a = unit(random) * 2.0f * std::numbers::pi_v<float>, d = areaRadius * std::sqrt(unit(random));
+      p.position = glm::vec2(std::cos(a), std::sin(a)) * d;
+      const bool clear = std::all_of(placed.begin(), placed.end(), [&](const ForestPlacement& q) {
+        return glm::distance(p.position, q.position) >= r + crownRadii[q.tree];
+      });
+      if (clear) break;
+    }
+    placed.push_back(p);
+  }
+  return placed;
+}
+
+Forest::Forest(const vk::VulkanContext& context, const ForestOptions& options, const std::function<void(const std::string&)>& progress) {
+  const std::uint32_t kinds = static_cast<std::uint32_t>(options.params.size()) * std::max(1u, options.seeds);
+  const std::uint32_t distinct = std::min({kinds, std::max(1u, options.trees), TreeRenderer::kMaxTrees / 2});
+  for (std::uint32_t t = 0; t < distinct; ++t) {
+    const std::size_t s = t % options.params.size();
+    const std::uint64_t seed = options.seed + t / options.params.size();
+    ForestTree tree;
+    tree.label = options.species[s] + " #" + std::to_string(seed);
+    progress("growing " + tree.label + " (" + std::to_string(t + 1) + "/" + std::to_string(distinct) + ")");
+    GrowthOptions growth;
+    growth.seed = seed;
+    const Skeleton skeleton = generateSkeleton(options.params[s], growth);
+    const TreeMesh nearMesh = buildTreeMesh(skeleton);
+    tree.near = uploadTree(context, nearMesh.mesh, buildPatches(nearMesh.mesh), skeleton.leaves);
+    // Far: the deepest level as fake branches over a mesh of the others (the same tree, breadth-first).
+    MeshOptions farOptions;
+    farOptions.levels = std::max(1, skeleton.levels - 1);
+    const TreeMesh farMesh = buildTreeMesh(skeleton, farOptions);
+    const auto impostors = skeleton.levels > 1 ? impostorSegments(skeleton, farOptions.levels) : std::vector<ImpostorSegment>{};
+    tree.far = uploadTree(context, farMesh.mesh, buildPatches(farMesh.mesh), skeleton.leaves, impostors);
+    tree.bounds = tree.near.bounds;
+    float reach = 0.0f;
+    for (const glm::vec3& p : nearMesh.mesh.positions) reach = std::max(reach, glm::length(glm::vec2(p)));
+    for (const Leaf& leaf : skeleton.leaves) {
+      const glm::vec3 p(leaf.position);
+      const auto length = static_cast<float>(leaf.length);
+      reach = std::max(reach, glm::length(glm::vec2(p)) + length);
+      tree.bounds.lo = glm::min(tree.bounds.lo, p - glm::vec3(length));
+      tree.bounds.hi = glm::max(tree.bounds.hi, p + glm::vec3(length));
+    }
+    tree.bounds.lo.z -= tree.near.plantingDepth;
+    tree.bounds.hi.z -= tree.near.plantingDepth;
+    tree.crownRadius = reach;
+    trees_.push_back(std::move(tree));
+  }
+  std::vector<float> radii;
+  for (const ForestTree& t : trees_) radii.push_back(t.crownRadius);
+  placements_ = placeTrees(radii, std::max(1u, options.trees), options.seed, radius_);
+  if (options.trees <= 1) placements_.front().rotation = 0.0f;  // a single tree as `arbor render` shows it
+}
+
+std::vector<const GpuTree*> Forest::gpuTrees() const {
+  std::vector<const GpuTree*> gpu;
+  for (const ForestTree& t : trees_) {
+    gpu.push_back(&t.near);
+    gpu.push_back(&t.far);
+  }
+  return gpu;
+}
+
+ForestFrame Forest::frame(const Camera& camera, float aspect, float farDistance) const {
+  const auto planes = frustumPlanes(projectionMatrix(camera, aspect) * viewMatrix(camera));
+  ForestFrame f;
+  for (const ForestPlacement& p : placements_) {
+    const ForestTree& tree = trees_[p.tree];
+    const float height = tree.bounds.hi.z - tree.bounds.lo.z;
+    const glm::vec3 center(p.position, 0.5f * (tree.bounds.lo.z + tree.bounds.hi.z));
+    const float radius = std::sqrt(tree.crownRadius * tree.crownRadius + 0.25f * height * height);
+    const bool inside = std::all_of(planes.begin(), planes.end(), [&](const Plane& q) { return glm::dot(q.normal, center) + q.offset >= -radius; });
+    if (!inside) {
+      ++f.culled;
+      continue;
+    }
+    const bool isFar = farDistance > 0.0f && glm::distance(camera.eye, center) - radius > farDistance;
+    f.far += isFar ? 1 : 0;
+    ++f.visible;
+    f.instances.push_back({2 * p.tree + (isFar ? 1u : 0u), placementModel(p, tree.near.plantingDepth)});
+  }
+  return f;
+}
+
+Camera Forest::overview(float aspect) const {
+  float top = 0.0f;
+  for (const ForestTree& t : trees_) top = std::max(top, t.bounds.hi.z);
+  if (placements_.size() == 1) {
+    const ForestTree& t = trees_.front();
+    return frameBounds(t.bounds, 25.0f, 6.0f, aspect);
+  }
+  const float r = radius_ + trees_.front().crownRadius;
+  return frameBounds(Bounds{glm::vec3(-r, -r, 0.0f), glm::vec3(r, r, top)}, 25.0f, 20.0f, aspect);
+}
+
+}  // namespace arbor::render

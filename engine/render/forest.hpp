@@ -1,0 +1,70 @@
+#pragma once
+// A forest for the walkthrough: a few distinct trees (species x seed), each grown once, meshed at two levels
+// of detail and instanced many times; placed without overlapping crowns; each frame the visible instances
+// with the level of detail their distance asks for.
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "gpu_tree.hpp"
+#include "renderer.hpp"
+#include "species/species.hpp"
+
+namespace arbor::render {
+
+struct ForestOptions {
+  std::vector<std::string> species;  // names shown in progress and the overlay, one per entry of `params`
+  std::vector<SpeciesParams> params;
+  std::uint32_t trees = 1;           // instances (1: one tree at the origin)
+  std::uint32_t seeds = 3;           // distinct seeds per species
+  std::uint64_t seed = 1;            // first seed; also drives the placement
+};
+
+// One distinct tree on the GPU, near (every level meshed) and far (the deepest level as fake branches).
+struct ForestTree {
+  std::string label;
+  GpuTree near, far;
+  float crownRadius = 0.0f;   // horizontal reach of mesh and leaves from the trunk
+  Bounds bounds;              // planted, object space, with the leaves
+};
+
+struct ForestPlacement {
+  std::uint32_t tree = 0;  // index into the distinct trees
+  glm::vec2 position{0.0f};
+  float rotation = 0.0f;   // about z, radians
+};
+
+struct ForestFrame {
+  std::vector<TreeInstance> instances;   // tree index: 2 t (near) or 2 t + 1 (far)
+  std::uint32_t visible = 0, far = 0, culled = 0;
+};
+
+class Forest {
+ public:
+  // Grows, meshes and uploads the distinct trees (progress: one line per tree) and places the instances.
+  Forest(const vk::VulkanContext& context, const ForestOptions& options, const std::function<void(const std::string&)>& progress);
+
+  // For TreeRenderer::setTrees: near and far of each distinct tree, in that order.
+  std::vector<const GpuTree*> gpuTrees() const;
+  const std::vector<ForestTree>& trees() const { return trees_; }
+  const std::vector<ForestPlacement>& placements() const { return placements_; }
+  float radius() const { return radius_; }  // of the planted area
+
+  // The instances inside the view frustum; beyond `farDistance` metres (0: never) the far level of detail.
+  ForestFrame frame(const Camera& camera, float aspect, float farDistance) const;
+
+  // A camera that sees the whole forest (or the single tree) from the default side.
+  Camera overview(float aspect) const;
+
+ private:
+  std::vector<ForestTree> trees_;
+  std::vector<ForestPlacement> placements_;
+  float radius_ = 0.0f;
+};
+
+// Positions for `count` crowns of the given radii (one per tree kind, chosen in turn) inside a disc, no two
+// crowns overlapping; deterministic for a seed. The first stands at the origin.
+std::vector<ForestPlacement> placeTrees(const std::vector<float>& crownRadii, std::uint32_t count, std::uint64_t seed, float& areaRadius);
+
+}  // namespace arbor::render

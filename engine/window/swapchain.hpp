@@ -1,0 +1,60 @@
+#pragma once
+// The window's swapchain with a colour + depth render pass like the offscreen target's, one frame in flight
+// (the renderer's scene buffer is single), recreated on resize, and screenshots read back from it.
+#include <vector>
+
+#include "image/png_io.hpp"
+#include "vk/buffer.hpp"
+#include "vk/texture.hpp"
+
+namespace arbor::window {
+
+class Swapchain {
+ public:
+  // vsync: FIFO; otherwise MAILBOX or IMMEDIATE where offered.
+  Swapchain(const vk::VulkanContext& context, VkSurfaceKHR surface, VkExtent2D size, bool vsync);
+  ~Swapchain();
+  Swapchain(const Swapchain&) = delete;
+  Swapchain& operator=(const Swapchain&) = delete;
+
+  VkRenderPass renderPass() const { return renderPass_; }  // the same across recreations
+  VkExtent2D extent() const { return extent_; }
+  std::uint32_t imageCount() const { return static_cast<std::uint32_t>(images_.size()); }
+  VkPresentModeKHR presentMode() const { return presentMode_; }
+  void recreate(VkExtent2D size);
+
+  // Waits for the previous frame, acquires an image and begins the command buffer; false: out of date.
+  bool beginFrame(VkCommandBuffer& cmd);
+  VkFramebuffer framebuffer() const { return framebuffers_[current_]; }
+  // After the render pass: copy the image for screenshot() (valid once the frame is done).
+  void recordScreenshot(VkCommandBuffer cmd);
+  // Ends the command buffer, submits and presents; false: out of date or suboptimal (recreate).
+  bool endFrame();
+  void waitIdle() const;
+  Image screenshot() const;  // RGBA, row 0 at the top, of the last frame that recorded one
+
+ private:
+  void build(VkExtent2D size);
+  void destroyImages();
+
+  const vk::VulkanContext& context_;
+  VkSurfaceKHR surface_;
+  bool vsync_;
+  VkSurfaceFormatKHR format_{};
+  VkPresentModeKHR presentMode_ = VK_PRESENT_MODE_FIFO_KHR;
+  VkSwapchainKHR swapchain_ = VK_NULL_HANDLE;
+  VkRenderPass renderPass_ = VK_NULL_HANDLE;
+  VkExtent2D extent_{};
+  std::vector<VkImage> images_;
+  std::vector<VkImageView> views_;
+  std::vector<VkFramebuffer> framebuffers_;
+  vk::GpuImage depth_;
+  vk::Buffer readback_;
+  VkCommandBuffer cmd_ = VK_NULL_HANDLE;
+  VkSemaphore imageAvailable_ = VK_NULL_HANDLE, renderFinished_ = VK_NULL_HANDLE;
+  VkFence inFlight_ = VK_NULL_HANDLE;
+  std::uint32_t current_ = 0;
+  bool swizzle_ = false;  // BGRA images
+};
+
+}  // namespace arbor::window

@@ -1,0 +1,50 @@
+#pragma once
+// A GLFW window with a Vulkan surface and the input a walkthrough needs: keys held, mouse motion, resize,
+// minimise and a fullscreen toggle.
+#include <string>
+#include <vector>
+
+#include <vulkan/vulkan.h>
+
+struct GLFWwindow;
+
+namespace arbor::window {
+
+// True when GLFW can open a window here (a display is reachable).
+bool displayAvailable();
+// The instance extensions a window surface needs (after displayAvailable()).
+std::vector<const char*> requiredInstanceExtensions();
+
+class Window {
+ public:
+  Window(const std::string& title, int width, int height);
+  ~Window();
+  Window(const Window&) = delete;
+  Window& operator=(const Window&) = delete;
+
+  GLFWwindow* handle() const { return window_; }
+  VkSurfaceKHR createSurface(VkInstance instance) const;
+
+  bool shouldClose() const;
+  void pollEvents();
+  // Framebuffer size in pixels; 0 x 0 while minimised.
+  VkExtent2D framebufferSize() const;
+  void waitWhileMinimised();
+  void toggleFullscreen();
+
+  bool keyHeld(int key) const;
+  bool keyPressed(int key);      // went down since the last call for this key
+  bool mouseLookHeld() const;    // right button
+  // Mouse motion in pixels since the last call.
+  void takeMouseDelta(double& dx, double& dy);
+  double takeScroll();
+
+ private:
+  GLFWwindow* window_ = nullptr;
+  int windowedX_ = 0, windowedY_ = 0, windowedWidth_ = 0, windowedHeight_ = 0;
+  double lastX_ = 0.0, lastY_ = 0.0;
+  bool mouseKnown_ = false;
+  std::vector<bool> wasDown_;
+};
+
+}  // namespace arbor::window

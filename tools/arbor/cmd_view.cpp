@@ -1,0 +1,380 @@
+// arbor view: the real-time walkthrough over a generated forest (GLFW window, Vulkan swapchain, ImGui
+// overlay); scripted with a camera path for tests and demos; offscreen to PNG files where no display is.
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+
+#include "assets.hpp"
+#include "commands.hpp"
+#include "image/png_io.hpp"
+#include "render/forest.hpp"
+#include "render/render_session.hpp"
+#include "render_options.hpp"
+#include "species/species_fields.hpp"
+#include "view_camera.hpp"
+#include "window/overlay.hpp"
+#include "window/swapchain.hpp"
+#include "window/window.hpp"
+
+namespace arbor::cli {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct ViewOptions {
+  std::vector<std::string> species{"black-tupelo"};
+  std::uint32_t forest = 1;
+  std::uint32_t seeds = 2;
+  std::uint64_t seed = 1;
+  std::string size = "1280x720";
+  bool noVsync = false;
+  bool fullscreen = false;
+  bool orbit = false;
+  std::string mode = "acc";
+  float tess = 0.0f;
+  float adaptive = 8.0f;
+  float displace = 0.0f;
+  bool noLeaves = false;
+  float leafLod = 30.0f;
+  int shadowLeaves = 0;
+  float farDistance = 60.0f;
+  std::string light = "25,40";
+  std::string cameraPath;
+  int frames = 0;
+  int screenshotEvery = 0;
+  std::string out = "out/view";
+  bool offscreen = false;
+  bool overlayInScript = false;
+  std::string device;
+  bool validation = false;
+};
+
+// What the overlay changes while the viewer runs.
+struct ViewState {
+  render::RenderSettings settings;
+  float farDistance = 60.0f;
+  float lightAzimuth = 25.0f, lightElevation = 40.0f;
+  bool showOverlay = true;
+  bool regenerate = false;
+  std::vector<float> frameTimes = std::vector<float>(120, 0.0f);
+  std::size_t frameIndex = 0;
+};
+
+render::ForestOptions forestOptions(const ViewOptions& o, const std::vector<SpeciesParams>& params) {
+  render::ForestOptions f;
+  f.species = o.species;
+  f.params = params;
+  f.trees = o.forest;
+  f.seeds = o.seeds;
+  f.seed = o.seed;
+  return f;
+}
+
+void progressLine(const std::string& text) {
+  std::fprintf(stderr, "arbor view: %s\n", text.c_str());
+  std::fflush(stderr);
+}
+
+std::string screenshotName(const std::string& dir, int frame) {
+  char name[32];
+  std::snprintf(name, sizeof name, "frame-%04d.png", frame);
+  return (fs::path(dir) / name).string();
+}
+
+// The overlay's panel: figures, render settings, the species' parameters.
+void drawPanel(ViewState& state, const render::ForestFrame& frame, const render::FrameStats& stats, std::vector<SpeciesParams>& params,
+               const std::vector<std::string>& names, const std::string& device) {
+  ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(360, 520), ImGuiCond_FirstUseEver);
+  ImGui::Begin("Arbor");
+  ImGui::Text("%s", device.c_str());
+  const float last = state.frameTimes[(state.frameIndex + state.frameTimes.size() - 1) % state.frameTimes.size()];
+  ImGui::Text("frame %.2f ms (%.0f fps)", static_cast<double>(last), last > 0.0f ? 1000.0 / static_cast<double>(last) : 0.0);
+  ImGui::PlotLines("ms", state.frameTimes.data(), static_cast<int>(state.frameTimes.size()), static_cast<int>(state.frameIndex), nullptr,
+                   0.0f, FLT_MAX, ImVec2(0, 60));
+  ImGui::Text("triangles %llu, trees %u visible (%u far), %u culled", static_cast<unsigned long long>(stats.triangles), frame.visible,
+              frame.far, frame.culled);
+  render::RenderSettings& s = state.settings;
+  int mode = static_cast<int>(s.mode);
+  ImGui::Combo("mode", &mode, "flat\0pn\0acc\0");
+  s.mode = static_cast<render::RenderMode>(mode);
+  bool adaptive = s.adaptivePixels > 0.0f;
+  ImGui::Checkbox("adaptive", &adaptive);
+  if (adaptive) {
+    if (s.adaptivePixels <= 0.0f) s.adaptivePixels = 8.0f;
+    ImGui::SliderFloat("edge pixels", &s.adaptivePixels, 1.0f, 64.0f);
+  } else {
+    s.adaptivePixels = 0.0f;
+    ImGui::SliderFloat("factor", &s.tessLevel, 1.0f, 64.0f);
+  }
+  ImGui::SliderFloat("displacement", &s.displacement, 0.0f, 1.0f);
+  ImGui::Checkbox("wireframe", &s.wireframe);
+  ImGui::Checkbox("leaves", &s.leaves);
+  ImGui::SliderFloat("leaf distance", &s.leafLodDistance, 0.0f, 200.0f);
+  int shadow = static_cast<int>(s.shadowLeaves);
+  ImGui::SliderInt("shadow leaves", &shadow, 0, 500);
+  s.shadowLeaves = static_cast<std::uint32_t>(shadow);
+  ImGui::SliderFloat("impostors beyond (m)", &state.farDistance, 0.0f, 300.0f);
+  ImGui::SliderFloat("sun azimuth", &state.lightAzimuth, -180.0f, 180.0f);
+  ImGui::SliderFloat("sun elevation", &state.lightElevation, -10.0f, 90.0f);
+  s.lightDirection = render::sunDirection(state.lightAzimuth, state.lightElevation);
+  for (std::size_t k = 0; k < params.size(); ++k) {
+    if (!ImGui::CollapsingHeader(names[k].c_str())) continue;
+    ImGui::PushID(static_cast<int>(k));
+    for (const TreeField& f : treeFields()) {
+      if (f.real) {
+        auto v = static_cast<float>(params[k].*f.real);
+        if (ImGui::SliderFloat(f.key, &v, static_cast<float>(f.min), static_cast<float>(std::min(f.max, 1e4)))) params[k].*f.real = v;
+      } else if (f.integer && f.type == FieldType::Integer) {
+        int v = params[k].*f.integer;
+        if (ImGui::SliderInt(f.key, &v, static_cast<int>(f.min), static_cast<int>(std::min(f.max, 1e4)))) params[k].*f.integer = v;
+      }
+    }
+    if (ImGui::Button("regenerate")) state.regenerate = true;
+    ImGui::PopID();
+  }
+  ImGui::Text("WASD move, right mouse look, Shift fast, Q/E down/up");
+  ImGui::Text("Tab orbit/walk, F11 fullscreen, F12 screenshot, F1 panel");
+  ImGui::End();
+}
+
+// The ground fades into the horizon beyond the forest as seen from the eye.
+float groundRadius(const render::Forest& forest, const render::Camera& camera) {
+  return std::max(100.0f, 2.0f * (forest.radius() + glm::length(glm::vec2(camera.eye))));
+}
+
+void beginPass(VkCommandBuffer cmd, VkRenderPass pass, VkFramebuffer framebuffer, VkExtent2D extent) {
+  std::array<VkClearValue, 2> clear{};
+  clear[1].depthStencil = {1.0f, 0};
+  VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
+  begin.renderPass = pass;
+  begin.framebuffer = framebuffer;
+  begin.renderArea = {{0, 0}, extent};
+  begin.clearValueCount = static_cast<std::uint32_t>(clear.size());
+  begin.pClearValues = clear.data();
+  vkCmdBeginRenderPass(cmd, &begin, VK_SUBPASS_CONTENTS_INLINE);
+}
+
+// No display (or --offscreen): the same scene through the offscreen target, every screenshot a PNG.
+int runOffscreen(const ViewOptions& o, ViewState& state, const std::vector<SpeciesParams>& params, const std::vector<render::Camera>& path,
+                 int frames, int every) {
+  std::uint32_t width = 0, height = 0;
+  parseSize(o.size, width, height);
+  vk::ContextOptions contextOptions;
+  contextOptions.validation = validationWanted(o.validation);
+  contextOptions.device = o.device;
+  vk::VulkanContext context(contextOptions);
+  render::RenderSession session(context, width, height, VK_SAMPLE_COUNT_1_BIT, render::loadTreeTextures(assetDirectory()));
+  const render::Forest forest(context, forestOptions(o, params), progressLine);
+  session.renderer().setTrees(forest.gpuTrees());
+  const float aspect = static_cast<float>(width) / static_cast<float>(height);
+  const std::vector<render::Camera> keys = path.empty() ? std::vector<render::Camera>{forest.overview(aspect)} : path;
+  fs::create_directories(o.out);
+  std::vector<std::string> written;
+  for (int f = 0; f < frames; ++f) {
+    const render::Camera camera = cameraOnPath(keys, f, frames);
+    state.settings.groundRadius = groundRadius(forest, camera);
+    const render::ForestFrame visible = forest.frame(camera, aspect, state.farDistance);
+    const render::FrameResult r = session.render(camera, state.settings, visible.instances);
+    std::fprintf(stderr, "arbor view: frame %d/%d: %u trees (%u far, %u culled), %llu triangles, %.1f ms\n", f + 1, frames, visible.visible,
+                 visible.far, visible.culled, static_cast<unsigned long long>(r.gpu.triangles), r.cpuMilliseconds);
+    if ((f + 1) % every == 0 || f + 1 == frames) {
+      written.push_back(screenshotName(o.out, f + 1));
+      writePng(written.back(), session.image());
+    }
+  }
+  if (reportValidationErrors(context)) return kExitFailure;
+  std::printf("arbor view: no window (%s); rendered %d frames of the same scene offscreen on %s\n",
+              o.offscreen ? "--offscreen" : "no display", frames, context.deviceDescription().c_str());
+  for (const std::string& w : written) std::printf("wrote %s\n", w.c_str());
+  return 0;
+}
+
+int runWindow(const ViewOptions& o, ViewState& state, std::vector<SpeciesParams>& params, const std::vector<render::Camera>& path,
+              int frames, int every) {
+  std::uint32_t width = 0, height = 0;
+  parseSize(o.size, width, height);
+  window::Window win("Arbor", static_cast<int>(width), static_cast<int>(height));
+  if (o.fullscreen) win.toggleFullscreen();
+  vk::ContextOptions contextOptions;
+  contextOptions.validation = validationWanted(o.validation);
+  contextOptions.device = o.device;
+  contextOptions.instanceExtensions = window::requiredInstanceExtensions();
+  contextOptions.deviceExtensions = {VK_KHR_SWAPCHAIN_EXTENSION_NAME};
+  vk::VulkanContext context(contextOptions);
+  const VkSurfaceKHR surface = win.createSurface(context.instance());
+  int status = 0;
+  {
+    window::Swapchain swapchain(context, surface, win.framebufferSize(), !o.noVsync);
+    render::TreeRenderer renderer(context, swapchain.renderPass(), VK_SAMPLE_COUNT_1_BIT, render::loadTreeTextures(assetDirectory()));
+    auto forest = std::make_unique<render::Forest>(context, forestOptions(o, params), progressLine);
+    renderer.setTrees(forest->gpuTrees());
+    window::Overlay overlay(context, win.handle(), swapchain.renderPass(), swapchain.imageCount());
+    const bool scripted = frames > 0;
+    state.showOverlay = !scripted || o.overlayInScript;
+    const auto aspectOf = [](VkExtent2D e) { return static_cast<float>(e.width) / static_cast<float>(std::max(1u, e.height)); };
+    ViewCamera view = ViewCamera::lookingAt(forest->overview(aspectOf(swapchain.extent())), o.orbit || o.forest <= 1);
+    if (!view.orbit) view.position.z = std::max(view.position.z, 1.7f);
+    if (scripted) fs::create_directories(o.out);
+    render::FrameStats stats;
+    render::ForestFrame visible;
+    auto last = std::chrono::steady_clock::now();
+    int screenshotCount = 0;
+    std::printf("arbor view: %s on %s, %s; %zu distinct trees, %zu placed\n", scripted ? "scripted" : "interactive",
+                context.deviceDescription().c_str(), o.noVsync ? "vsync off" : "vsync on", forest->trees().size(), forest->placements().size());
+    for (int f = 0; !win.shouldClose() && (!scripted || f < frames); ++f) {
+      win.pollEvents();
+      win.waitWhileMinimised();
+      if (win.shouldClose()) break;
+      const auto now = std::chrono::steady_clock::now();
+      const float seconds = std::min(0.25f, std::chrono::duration<float>(now - last).count());
+      last = now;
+      bool screenshot = scripted && ((f + 1) % every == 0 || f + 1 == frames);
+      if (!scripted) {
+        if (win.keyPressed(GLFW_KEY_ESCAPE)) break;
+        if (win.keyPressed(GLFW_KEY_F1)) state.showOverlay = !state.showOverlay;
+        if (win.keyPressed(GLFW_KEY_F11)) win.toggleFullscreen();
+        if (win.keyPressed(GLFW_KEY_TAB)) {
+          const render::Camera c = view.camera();
+          view = ViewCamera::lookingAt(c, !view.orbit);
+        }
+        screenshot = win.keyPressed(GLFW_KEY_F12);
+        WalkInput in;
+        const bool keys = !overlay.wantsKeyboard();
+        in.forward = keys ? static_cast<float>(win.keyHeld(GLFW_KEY_W)) - static_cast<float>(win.keyHeld(GLFW_KEY_S)) : 0.0f;
+        in.right = keys ? static_cast<float>(win.keyHeld(GLFW_KEY_D)) - static_cast<float>(win.keyHeld(GLFW_KEY_A)) : 0.0f;
+        in.up = keys ? static_cast<float>(win.keyHeld(GLFW_KEY_E)) - static_cast<float>(win.keyHeld(GLFW_KEY_Q)) : 0.0f;
+        in.fast = win.keyHeld(GLFW_KEY_LEFT_SHIFT);
+        double dx = 0.0, dy = 0.0;
+        win.takeMouseDelta(dx, dy);
+        if (win.mouseLookHeld() && !overlay.wantsMouse()) {
+          in.lookX = static_cast<float>(dx);
+          in.lookY = static_cast<float>(dy);
+        }
+        in.zoom = overlay.wantsMouse() ? 0.0f : static_cast<float>(win.takeScroll());
+        view.update(in, seconds, forest->radius() + forest->trees().front().crownRadius);
+      }
+      const VkExtent2D size = win.framebufferSize();
+      if (size.width != swapchain.extent().width || size.height != swapchain.extent().height) swapchain.recreate(size);
+      const render::Camera camera = scripted ? cameraOnPath(path.empty() ? std::vector<render::Camera>{view.camera()} : path, f, frames)
+                                             : view.camera();
+      state.settings.groundRadius = groundRadius(*forest, camera);
+      visible = forest->frame(camera, aspectOf(swapchain.extent()), state.farDistance);
+      if (state.showOverlay) {
+        overlay.newFrame();
+        drawPanel(state, visible, stats, params, o.species, context.deviceDescription());
+      }
+      VkCommandBuffer cmd = VK_NULL_HANDLE;
+      if (!swapchain.beginFrame(cmd)) {
+        swapchain.recreate(win.framebufferSize());
+        if (state.showOverlay) ImGui::EndFrame();
+        continue;
+      }
+      renderer.beginFrame(cmd, camera, swapchain.extent(), state.settings);
+      beginPass(cmd, swapchain.renderPass(), swapchain.framebuffer(), swapchain.extent());
+      renderer.draw(cmd, swapchain.extent(), state.settings, visible.instances);
+      if (state.showOverlay) overlay.render(cmd);
+      vkCmdEndRenderPass(cmd);
+      if (screenshot) swapchain.recordScreenshot(cmd);
+      const bool current = swapchain.endFrame();
+      stats = renderer.stats();
+      const float ms = seconds * 1000.0f;
+      state.frameTimes[state.frameIndex] = ms;
+      state.frameIndex = (state.frameIndex + 1) % state.frameTimes.size();
+      if (screenshot) {
+        const std::string name = screenshotName(o.out, scripted ? f + 1 : ++screenshotCount);
+        fs::create_directories(o.out);
+        writePng(name, swapchain.screenshot());
+        std::printf("wrote %s\n", name.c_str());
+      }
+      if (scripted) {
+        std::fprintf(stderr, "arbor view: frame %d/%d: %u trees (%u far, %u culled), %llu triangles\n", f + 1, frames, visible.visible,
+                     visible.far, visible.culled, static_cast<unsigned long long>(stats.triangles));
+      }
+      if (!current) swapchain.recreate(win.framebufferSize());
+      if (state.regenerate) {
+        state.regenerate = false;
+        swapchain.waitIdle();
+        try {
+          auto grown = std::make_unique<render::Forest>(context, forestOptions(o, params), progressLine);
+          renderer.setTrees(grown->gpuTrees());
+          forest = std::move(grown);
+        } catch (const std::exception& e) {
+          std::fprintf(stderr, "arbor view: regenerating failed, keeping the previous trees: %s\n", e.what());
+        }
+      }
+    }
+    swapchain.waitIdle();
+    if (reportValidationErrors(context)) status = kExitFailure;
+  }
+  vkDestroySurfaceKHR(context.instance(), surface, nullptr);
+  return status;
+}
+
+int runView(const ViewOptions& o) {
+  ViewState state;
+  render::RenderSettings& s = state.settings;
+  s.mode = parseMode(o.mode);
+  s.tessLevel = o.tess > 0.0f ? o.tess : 8.0f;
+  s.adaptivePixels = o.tess > 0.0f ? 0.0f : o.adaptive;
+  s.displacement = o.displace;
+  s.leaves = !o.noLeaves;
+  s.impostors = true;  // drawn by the far trees only: the near ones have none
+  s.leafLodDistance = o.leafLod;
+  s.shadowLeaves = static_cast<std::uint32_t>(o.shadowLeaves);
+  s.lightDirection = parseLight(o.light);
+  std::sscanf(o.light.c_str(), "%f,%f", &state.lightAzimuth, &state.lightElevation);
+  state.farDistance = o.farDistance;
+  std::uint32_t width = 0, height = 0;
+  parseSize(o.size, width, height);  // bad sizes fail before anything is grown
+  std::vector<SpeciesParams> params;
+  for (const std::string& name : o.species) params.push_back(loadSpeciesArgument(name));
+  const std::vector<render::Camera> path = o.cameraPath.empty() ? std::vector<render::Camera>{} : readCameraPath(o.cameraPath);
+  // Scripted: a camera path or a frame count; without a display the scene goes to PNG files instead.
+  const bool scripted = !o.cameraPath.empty() || o.frames > 0;
+  const int frames = o.frames > 0 ? o.frames : (scripted ? 60 : 0);
+  const int every = o.screenshotEvery > 0 ? o.screenshotEvery : std::max(1, frames);
+  if (o.offscreen || !window::displayAvailable()) return runOffscreen(o, state, params, path, frames > 0 ? frames : 1, frames > 0 ? every : 1);
+  return runWindow(o, state, params, path, frames, every);
+}
+
+}  // namespace
+
+void addViewCommand(CLI::App& app, Action& action) {
+  auto o = std::make_shared<ViewOptions>();
+  CLI::App* cmd = app.add_subcommand("view", "Walk through a generated forest in a window (Vulkan); offscreen PNGs where no display is.");
+  cmd->add_option("species", o->species, "Presets or species files (default: black-tupelo)");
+  cmd->add_option("--forest", o->forest, "Trees to place (1: one tree, orbit camera)")->check(CLI::Range(1, 5000))->capture_default_str();
+  cmd->add_option("--seeds", o->seeds, "Distinct seeds per species (each grown once, then instanced)")->check(CLI::Range(1, 16))->capture_default_str();
+  cmd->add_option("--seed", o->seed, "First seed; also places the trees")->capture_default_str();
+  cmd->add_option("--size", o->size, "Window (or picture) size WIDTHxHEIGHT")->capture_default_str();
+  cmd->add_flag("--no-vsync", o->noVsync, "Present without waiting for vertical blank (mailbox or immediate)");
+  cmd->add_flag("--fullscreen", o->fullscreen, "Start fullscreen (F11 toggles)");
+  cmd->add_flag("--orbit", o->orbit, "Start with the orbit camera (Tab toggles)");
+  cmd->add_option("--mode", o->mode, "flat, pn, acc")->capture_default_str();
+  cmd->add_option("--tess", o->tess, "Uniform tessellation factor (default: adaptive)")->check(CLI::Range(1.0, 64.0));
+  cmd->add_option("--adaptive", o->adaptive, "Adaptive tessellation: target edge length in pixels")->check(CLI::Range(0.5, 1000.0))->capture_default_str();
+  cmd->add_option("--displace", o->displace, "Displacement scale")->check(CLI::Range(-10.0, 10.0));
+  cmd->add_flag("--no-leaves", o->noLeaves, "Leave the leaves out");
+  cmd->add_option("--leaf-lod", o->leafLod, "All leaves up to this distance (m), then thinning (0: all)")->check(CLI::Range(0.0, 10000.0))->capture_default_str();
+  cmd->add_option("--shadow-leaves", o->shadowLeaves, "Leaf self-shadowing against this many leaves")->check(CLI::Range(0, 4096))->capture_default_str();
+  cmd->add_option("--far", o->farDistance, "Trees beyond this distance (m) switch to fake branches (0: never)")->check(CLI::Range(0.0, 100000.0))->capture_default_str();
+  cmd->add_option("--light", o->light, "Sun direction AZIMUTH,ELEVATION in degrees")->capture_default_str();
+  cmd->add_option("--camera-path", o->cameraPath, "Scripted: cameras ex,ey,ez,tx,ty,tz[,fov], one per line, visited over --frames");
+  cmd->add_option("--frames", o->frames, "Scripted: render this many frames, then exit (default with a path: 60)")->check(CLI::Range(1, 100000));
+  cmd->add_option("--screenshot-every", o->screenshotEvery, "Scripted: write every K-th frame as PNG (default: the last)")->check(CLI::Range(1, 100000));
+  cmd->add_option("--out", o->out, "Folder for screenshots")->capture_default_str();
+  cmd->add_flag("--offscreen", o->offscreen, "Render offscreen even when a display is there");
+  cmd->add_flag("--overlay", o->overlayInScript, "Draw the overlay in scripted runs too");
+  cmd->add_option("--device", o->device, "Prefer the Vulkan device whose name contains this");
+  cmd->add_flag("--validation", o->validation, "Enable the Khronos validation layer (also ARBOR_VALIDATION=1); errors fail the run");
+  cmd->callback([o, &action] { action = [o] { return runView(*o); }; });
+}
+
+}  // namespace arbor::cli
