@@ -77,6 +77,10 @@ void Window::toggleFullscreen() {
   glfwSetWindowMonitor(window_, monitor, 0, 0, mode->width, mode->height, mode->refreshRate);
 }
 
+void Window::resize(int width, int height) { glfwSetWindowSize(window_, width, height); }
+void Window::minimise() { glfwIconifyWindow(window_); }
+void Window::restore() { glfwRestoreWindow(window_); }
+
 bool Window::keyHeld(int key) const { return glfwGetKey(window_, key) == GLFW_PRESS; }
 
 bool Window::keyPressed(int key) {

@@ -31,6 +31,10 @@ class Window {
   VkExtent2D framebufferSize() const;
   void waitWhileMinimised();
   void toggleFullscreen();
+  // Scripted window events (tests, demos).
+  void resize(int width, int height);
+  void minimise();
+  void restore();
 
   bool keyHeld(int key) const;
   bool keyPressed(int key);      // went down since the last call for this key

@@ -10,6 +10,7 @@
 #include <imgui.h>
 
 #include "assets.hpp"
+#include "bench_support.hpp"
 #include "commands.hpp"
 #include "image/png_io.hpp"
 #include "render/forest.hpp"
@@ -49,6 +50,7 @@ struct ViewOptions {
   int frames = 0;
   int screenshotEvery = 0;
   std::string out = "out/view";
+  std::string events;
   bool offscreen = false;
   bool overlayInScript = false;
   std::string device;
@@ -87,11 +89,37 @@ std::string screenshotName(const std::string& dir, int frame) {
   return (fs::path(dir) / name).string();
 }
 
+struct WindowEvent {
+  int frame = 0;
+  std::string action;  // resize, minimise, restore, fullscreen, regenerate
+  int width = 0, height = 0;
+};
+
+std::vector<WindowEvent> parseEvents(const std::string& text) {
+  std::vector<WindowEvent> events;
+  for (const std::string& item : splitList(text)) {
+    WindowEvent e;
+    char action[16] = {};
+    int used = 0;
+    const bool resize = std::sscanf(item.c_str(), "%d:resize=%dx%d%n", &e.frame, &e.width, &e.height, &used) == 3 &&
+                        used == static_cast<int>(item.size());
+    if (resize) e.action = "resize";
+    else if (std::sscanf(item.c_str(), "%d:%15[a-z]%n", &e.frame, action, &used) == 2 && used == static_cast<int>(item.size())) e.action = action;
+    const bool known = e.action == "resize" || e.action == "minimise" || e.action == "restore" || e.action == "fullscreen" ||
+                       e.action == "regenerate";
+    if (!known || e.frame < 1 || (resize && (e.width < 1 || e.height < 1 || e.width > 8192 || e.height > 8192))) {
+      throw SpeciesError(item, "--events", "expected FRAME:resize=WxH, FRAME:minimise, FRAME:restore, FRAME:fullscreen or FRAME:regenerate, frames from 1");
+    }
+    events.push_back(e);
+  }
+  return events;
+}
+
 // The overlay's panel: figures, render settings, the species' parameters.
 void drawPanel(ViewState& state, const render::ForestFrame& frame, const render::FrameStats& stats, std::vector<SpeciesParams>& params,
                const std::vector<std::string>& names, const std::string& device) {
   ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(360, 520), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(430, 540), ImGuiCond_FirstUseEver);
   ImGui::Begin("Arbor");
   ImGui::Text("%s", device.c_str());
   const float last = state.frameTimes[(state.frameIndex + state.frameTimes.size() - 1) % state.frameTimes.size()];
@@ -228,10 +256,22 @@ int runWindow(const ViewOptions& o, ViewState& state, std::vector<SpeciesParams>
     int screenshotCount = 0;
     std::printf("arbor view: %s on %s, %s; %zu distinct trees, %zu placed\n", scripted ? "scripted" : "interactive",
                 context.deviceDescription().c_str(), o.noVsync ? "vsync off" : "vsync on", forest->trees().size(), forest->placements().size());
+    const std::vector<WindowEvent> events = parseEvents(o.events);
+    std::vector<double> frameMs;
     for (int f = 0; !win.shouldClose() && (!scripted || f < frames); ++f) {
+      for (const WindowEvent& e : events) {
+        if (e.frame != f + 1) continue;
+        if (e.action == "resize") win.resize(e.width, e.height);
+        if (e.action == "minimise") win.minimise();
+        if (e.action == "restore") win.restore();
+        if (e.action == "fullscreen") win.toggleFullscreen();
+        if (e.action == "regenerate") state.regenerate = true;  // as the overlay's button does
+      }
       win.pollEvents();
-      win.waitWhileMinimised();
+      if (!scripted) win.waitWhileMinimised();
       if (win.shouldClose()) break;
+      const VkExtent2D size = win.framebufferSize();
+      if (size.width == 0 || size.height == 0) continue;  // minimised in a script: nothing to draw into
       const auto now = std::chrono::steady_clock::now();
       const float seconds = std::min(0.25f, std::chrono::duration<float>(now - last).count());
       last = now;
@@ -260,7 +300,6 @@ int runWindow(const ViewOptions& o, ViewState& state, std::vector<SpeciesParams>
         in.zoom = overlay.wantsMouse() ? 0.0f : static_cast<float>(win.takeScroll());
         view.update(in, seconds, forest->radius() + forest->trees().front().crownRadius);
       }
-      const VkExtent2D size = win.framebufferSize();
       if (size.width != swapchain.extent().width || size.height != swapchain.extent().height) swapchain.recreate(size);
       const render::Camera camera = scripted ? cameraOnPath(path.empty() ? std::vector<render::Camera>{view.camera()} : path, f, frames)
                                              : view.camera();
@@ -285,6 +324,7 @@ int runWindow(const ViewOptions& o, ViewState& state, std::vector<SpeciesParams>
       const bool current = swapchain.endFrame();
       stats = renderer.stats();
       const float ms = seconds * 1000.0f;
+      if (f > 0) frameMs.push_back(ms);
       state.frameTimes[state.frameIndex] = ms;
       state.frameIndex = (state.frameIndex + 1) % state.frameTimes.size();
       if (screenshot) {
@@ -311,6 +351,12 @@ int runWindow(const ViewOptions& o, ViewState& state, std::vector<SpeciesParams>
       }
     }
     swapchain.waitIdle();
+    if (!frameMs.empty()) {
+      std::sort(frameMs.begin(), frameMs.end());
+      std::printf("arbor view: %zu frames at %ux%u, median %.1f ms (%.1f frames/s), slowest %.1f ms\n", frameMs.size() + 1,
+                  swapchain.extent().width, swapchain.extent().height, frameMs[frameMs.size() / 2], 1000.0 / frameMs[frameMs.size() / 2],
+                  frameMs.back());
+    }
     if (reportValidationErrors(context)) status = kExitFailure;
   }
   vkDestroySurfaceKHR(context.instance(), surface, nullptr);
@@ -332,7 +378,8 @@ int runView(const ViewOptions& o) {
   std::sscanf(o.light.c_str(), "%f,%f", &state.lightAzimuth, &state.lightElevation);
   state.farDistance = o.farDistance;
   std::uint32_t width = 0, height = 0;
-  parseSize(o.size, width, height);  // bad sizes fail before anything is grown
+  parseSize(o.size, width, height);  // bad input fails before anything is grown
+  parseEvents(o.events);
   std::vector<SpeciesParams> params;
   for (const std::string& name : o.species) params.push_back(loadSpeciesArgument(name));
   const std::vector<render::Camera> path = o.cameraPath.empty() ? std::vector<render::Camera>{} : readCameraPath(o.cameraPath);
@@ -370,6 +417,7 @@ void addViewCommand(CLI::App& app, Action& action) {
   cmd->add_option("--frames", o->frames, "Scripted: render this many frames, then exit (default with a path: 60)")->check(CLI::Range(1, 100000));
   cmd->add_option("--screenshot-every", o->screenshotEvery, "Scripted: write every K-th frame as PNG (default: the last)")->check(CLI::Range(1, 100000));
   cmd->add_option("--out", o->out, "Folder for screenshots")->capture_default_str();
+  cmd->add_option("--events", o->events, "Scripted window events FRAME:ACTION,... with ACTION resize=WxH, minimise, restore, fullscreen, regenerate");
   cmd->add_flag("--offscreen", o->offscreen, "Render offscreen even when a display is there");
   cmd->add_flag("--overlay", o->overlayInScript, "Draw the overlay in scripted runs too");
   cmd->add_option("--device", o->device, "Prefer the Vulkan device whose name contains this");

@@ -1,0 +1,67 @@
+// The forest behind the walkthrough: crowns placed without overlap, whole trees culled outside the view,
+// far trees switched to fake branches, the same tree instanced rather than grown again.
+#include <catch2/catch.hpp>
+
+#include "render/forest.hpp"
+#include "render_support.hpp"
+#include "test_support.hpp"
+
+using namespace arbor;
+
+TEST_CASE("trees are placed without overlapping crowns, the same for the same seed", "[forest]") {
+  const std::vector<float> radii{3.0f, 5.0f, 2.0f};
+  float area = 0.0f, again = 0.0f;
+  const auto placed = render::placeTrees(radii, 200, 7, area);
+  REQUIRE(placed.size() == 200);
+  CHECK(placed.front().position == glm::vec2(0.0f));
+  for (std::size_t i = 0; i < placed.size(); ++i) {
+    CHECK(placed[i].tree == i % radii.size());
+    CHECK(glm::length(placed[i].position) <= area + 1e-3f);
+    for (std::size_t j = 0; j < i; ++j) {
+      CHECK(glm::distance(placed[i].position, placed[j].position) >= radii[placed[i].tree] + radii[placed[j].tree]);
+    }
+  }
+  const auto same = render::placeTrees(radii, 200, 7, again);
+  CHECK(same.size() == placed.size());
+  for (std::size_t i = 0; i < placed.size(); ++i) CHECK(same[i].position == placed[i].position);
+  CHECK(render::placeTrees(radii, 200, 8, again)[1].position != placed[1].position);
+}
+
+TEST_CASE("a forest instances its distinct trees, culls whole trees and switches far ones to fake branches", "[forest][render]") {
+  render::ForestOptions options;
+  options.species = {"palm"};
+  options.params = {test::loadPreset("palm")};
+  options.trees = 30;
+  options.seeds = 2;
+  std::vector<std::string> progress;
+  const render::Forest forest(test::vulkan(), options, [&](const std::string& line) { progress.push_back(line); });
+  REQUIRE(forest.trees().size() == 2);  // two seeds of one species, grown once each
+  CHECK(progress.size() == 2);
+  CHECK(forest.placements().size() == 30);
+  CHECK(forest.gpuTrees().size() == 4);  // near and far of each
+  CHECK(forest.trees()[0].far.impostorCount > 0);
+  CHECK(forest.trees()[0].near.impostorCount == 0);
+  CHECK(forest.trees()[0].far.patchCount < forest.trees()[0].near.patchCount);
+
+  const render::Camera overview = forest.overview(1.5f);
+  const render::ForestFrame all = forest.frame(overview, 1.5f, 0.0f);
+  CHECK(all.visible == 30);  // the overview sees every tree
+  CHECK(all.culled == 0);
+  CHECK(all.far == 0);
+  const render::ForestFrame farAway = forest.frame(overview, 1.5f, 1.0f);
+  CHECK(farAway.far == farAway.visible);  // everything beyond a metre is far
+  for (const render::TreeInstance& i : farAway.instances) CHECK(i.tree % 2 == 1);
+  // Standing at the centre looking along +x: the trees behind are culled, and only they.
+  render::Camera inside;
+  inside.eye = glm::vec3(0.0f, 0.0f, 1.7f);
+  inside.target = glm::vec3(1.0f, 0.0f, 1.7f);
+  const render::ForestFrame half = forest.frame(inside, 1.5f, 0.0f);
+  CHECK(half.culled > 0);
+  CHECK(half.visible + half.culled == 30);
+  std::uint32_t behind = 0;
+  for (const render::ForestPlacement& p : forest.placements()) {
+    const float reach = forest.trees()[p.tree].crownRadius + (forest.trees()[p.tree].bounds.hi.z - forest.trees()[p.tree].bounds.lo.z);
+    behind += p.position.x < -reach ? 1 : 0;
+  }
+  CHECK(half.culled >= behind);
+}

@@ -1,0 +1,142 @@
+// The walkthrough viewer as users run it: in a window under Xvfb on lavapipe with a scripted camera path,
+// and offscreen where no display is. Validation is on in every run; any error fails the run (exit 1).
+#include <catch2/catch.hpp>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sys/wait.h>
+
+#include "image/image_compare.hpp"
+#include "image/png_io.hpp"
+#include "test_support.hpp"
+
+namespace fs = std::filesystem;
+using namespace arbor;
+
+namespace {
+
+struct Result {
+  int exitCode = -1;
+  std::string output;
+};
+
+// `prefix` runs the viewer under Xvfb or without a display.
+Result run(const std::string& prefix, const std::string& arguments) {
+  const std::string command = prefix + " " + ARBOR_BINARY + " view --validation " + arguments + " 2>&1";
+  Result r;
+  FILE* pipe = popen(command.c_str(), "r");
+  REQUIRE(pipe);
+  char buffer[4096];
+  std::size_t n = 0;
+  while ((n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) r.output.append(buffer, n);
+  const int status = pclose(pipe);
+  r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
+const std::string kXvfb = "xvfb-run -a -s '-screen 0 800x600x24'";
+const std::string kNoDisplay = "env -u DISPLAY -u WAYLAND_DISPLAY";
+
+// Walks past the palm: it stands in the middle of every frame.
+std::string palmPath() {
+  const std::string path = test::tempPath("palm-path.txt");
+  std::ofstream(path) << "# eye x,y,z, target x,y,z, field of view\n-8,-20,2,0,0,5,50\n\n8,-20,3,0,0,5,50\n";
+  return path;
+}
+
+std::string freshDir(const std::string& name) {
+  const std::string dir = test::tempPath(name);
+  fs::remove_all(dir);
+  return dir;
+}
+
+// Share of pixels in the column band around the middle that are not sky or ground (a tree is there).
+double treeShareInMiddle(const Image& image) {
+  std::size_t tree = 0, total = 0;
+  for (int y = 0; y < image.height; ++y) {
+    for (int x = image.width * 2 / 5; x < image.width * 3 / 5; ++x) {
+      const std::size_t i = 4 * (static_cast<std::size_t>(y) * static_cast<std::size_t>(image.width) + static_cast<std::size_t>(x));
+      const int r = image.rgba[i], g = image.rgba[i + 1], b = image.rgba[i + 2];
+      // Sky is blue-white; the ground a dull, even green-grey; bark brown, leaves saturated green.
+      const bool sky = b > r && b >= g;
+      const bool ground = std::abs(r - g) < 20 && std::abs(g - b) < 40 && g < 170 && y > image.height / 2;
+      tree += !sky && !ground ? 1 : 0;
+      ++total;
+    }
+  }
+  return static_cast<double>(tree) / static_cast<double>(total);
+}
+
+}  // namespace
+
+TEST_CASE("the viewer in a window shows the scripted frames, the same as offscreen, without validation errors", "[view]") {
+  const std::string path = palmPath();
+  const std::string windowDir = freshDir("view-window"), offscreenDir = freshDir("view-offscreen");
+  const std::string common = "palm --size 240x180 --camera-path " + path + " --frames 4 --screenshot-every 2 --out ";
+  const Result window = run(kXvfb, common + windowDir);
+  INFO(window.output);
+  REQUIRE(window.exitCode == 0);
+  CHECK_THAT(window.output, Catch::Contains("scripted on"));
+  CHECK_THAT(window.output, Catch::Contains("median"));
+  const Result offscreen = run(kNoDisplay, common + offscreenDir);
+  INFO(offscreen.output);
+  REQUIRE(offscreen.exitCode == 0);
+  CHECK_THAT(offscreen.output, Catch::Contains("no display"));
+  for (const char* frame : {"frame-0002.png", "frame-0004.png"}) {
+    INFO(frame);
+    REQUIRE(fs::exists(fs::path(windowDir) / frame));
+    REQUIRE(fs::exists(fs::path(offscreenDir) / frame));
+    const Image shown = readPng((fs::path(windowDir) / frame).string());
+    const Image rendered = readPng((fs::path(offscreenDir) / frame).string());
+    CHECK(shown.width == 240);
+    CHECK(shown.height == 180);
+    CHECK(treeShareInMiddle(shown) > 0.03);  // the palm is where the path looks
+    const ImageDifference d = compareImages(rendered, shown, 16);
+    CHECK(d.pixelsOverThreshold == 0);  // the swapchain shows what the offscreen target renders
+  }
+  CHECK_FALSE(fs::exists(fs::path(windowDir) / "frame-0001.png"));  // only every second frame
+}
+
+TEST_CASE("the viewer survives resize, minimise, fullscreen and regeneration, overlay on", "[view]") {
+  const std::string dir = freshDir("view-events");
+  const Result r = run(kXvfb, "palm --size 240x180 --frames 8 --screenshot-every 1 --overlay --out " + dir +
+                                  " --events 2:resize=200x150,3:minimise,4:restore,5:fullscreen,6:fullscreen,6:regenerate,7:resize=240x180");
+  INFO(r.output);
+  REQUIRE(r.exitCode == 0);
+  CHECK(readPng((fs::path(dir) / "frame-0002.png").string()).width == 200);
+  CHECK(readPng((fs::path(dir) / "frame-0005.png").string()).width == 800);  // the Xvfb screen
+  const Image last = readPng((fs::path(dir) / "frame-0008.png").string());
+  CHECK(last.width == 240);
+  // The overlay's frame-time graph, dark blue, stands at the top left.
+  const std::size_t corner = 4 * (100 * static_cast<std::size_t>(last.width) + 100);
+  CHECK(last.rgba[corner] + last.rgba[corner + 1] + last.rgba[corner + 2] < 250);
+  CHECK_THAT(r.output, Catch::Contains("growing palm #1 (1/1)"));
+}
+
+TEST_CASE("without a display the viewer renders a forest offscreen and says where", "[view]") {
+  const std::string dir = freshDir("view-forest");
+  const Result r = run(kNoDisplay, "palm quaking-aspen --forest 12 --seeds 1 --size 200x120 --levels-note --out " + dir);
+  CHECK(r.exitCode == 2);  // an unknown option is refused
+  const Result forest = run(kNoDisplay, "palm quaking-aspen --forest 12 --seeds 1 --size 200x120 --out " + dir);
+  INFO(forest.output);
+  REQUIRE(forest.exitCode == 0);
+  CHECK_THAT(forest.output, Catch::Contains("12 trees"));
+  CHECK_THAT(forest.output, Catch::Contains("wrote " + (fs::path(dir) / "frame-0001.png").string()));
+  CHECK(readPng((fs::path(dir) / "frame-0001.png").string()).width == 200);
+}
+
+TEST_CASE("the viewer refuses bad scripts with 2, naming the file, line or option", "[view]") {
+  const std::string bad = test::tempPath("bad-path.txt");
+  std::ofstream(bad) << "0,-10,2,0,0,2\n0,0,1,0,0,1\n";
+  const Result line = run(kNoDisplay, "palm --camera-path " + bad + " --frames 2 --out " + freshDir("view-bad"));
+  CHECK(line.exitCode == 2);
+  CHECK_THAT(line.output, Catch::Contains(bad));
+  CHECK_THAT(line.output, Catch::Contains("line 2"));
+  const Result missing = run(kNoDisplay, "palm --camera-path " + test::tempPath("no-such-path.txt") + " --out " + freshDir("view-bad"));
+  CHECK(missing.exitCode == 2);
+  CHECK_THAT(missing.output, Catch::Contains("no-such-path.txt"));
+  const Result events = run(kNoDisplay, "palm --events 3:explode --out " + freshDir("view-bad"));
+  CHECK(events.exitCode == 2);
+  CHECK_THAT(events.output, Catch::Contains("--events"));
+  CHECK_FALSE(fs::exists(test::tempPath("view-bad")));  // nothing written
+}
