@@ -1,5 +1,5 @@
 // The forest behind the walkthrough: crowns placed without overlap, whole trees culled outside the view,
-// far trees switched to fake branches, the same tree instanced rather than grown again.
+// farther trees with more of their levels as fake branches, the same tree instanced rather than grown again.
 #include <catch2/catch.hpp>
 
 #include "render/forest.hpp"
@@ -27,7 +27,7 @@ TEST_CASE("trees are placed without overlapping crowns, the same for the same se
   CHECK(render::placeTrees(radii, 200, 8, again)[1].position != placed[1].position);
 }
 
-TEST_CASE("a forest instances its distinct trees, culls whole trees and switches far ones to fake branches", "[forest][render]") {
+TEST_CASE("a forest instances its distinct trees, culls whole trees and fakes more levels the farther a tree is", "[forest][render]") {
   render::ForestOptions options;
   options.species = {"palm"};
   options.params = {test::loadPreset("palm")};
@@ -38,24 +38,29 @@ TEST_CASE("a forest instances its distinct trees, culls whole trees and switches
   REQUIRE(forest.trees().size() == 2);  // two seeds of one species, grown once each
   CHECK(progress.size() == 2);
   CHECK(forest.placements().size() == 30);
-  CHECK(forest.gpuTrees().size() == 4);  // near and far of each
-  CHECK(forest.trees()[0].far.impostorCount > 0);
-  CHECK(forest.trees()[0].near.impostorCount == 0);
-  CHECK(forest.trees()[0].far.patchCount < forest.trees()[0].near.patchCount);
+  CHECK(forest.gpuTrees().size() == 2 * render::kDetailLevels);
+  const auto& details = forest.trees()[0].detail;
+  CHECK(details[0].impostorCount == 0);
+  CHECK(details[1].impostorCount > 0);
+  CHECK(details[1].patchCount < details[0].patchCount);
+  CHECK(details[2].patchCount <= details[1].patchCount);  // the palm has two levels: the trunk stays
 
   const render::Camera overview = forest.overview(1.5f);
-  const render::ForestFrame all = forest.frame(overview, 1.5f, 0.0f);
+  const render::ForestFrame all = forest.frame(overview, 1.5f, {1e6f, 1e6f});
   CHECK(all.visible == 30);  // the overview sees every tree
   CHECK(all.culled == 0);
-  CHECK(all.far == 0);
-  const render::ForestFrame farAway = forest.frame(overview, 1.5f, 1.0f);
-  CHECK(farAway.far == farAway.visible);  // everything beyond a metre is far
-  for (const render::TreeInstance& i : farAway.instances) CHECK(i.tree % 2 == 1);
+  CHECK(all.perDetail[0] == 30);
+  const render::ForestFrame reduced = forest.frame(overview, 1.5f, {0.0f, 1e6f});
+  CHECK(reduced.perDetail[1] == 30);
+  for (const render::TreeInstance& i : reduced.instances) CHECK(i.tree % render::kDetailLevels == 1);
+  const render::ForestFrame farAway = forest.frame(overview, 1.5f, {0.5f, 1.0f});
+  CHECK(farAway.perDetail[2] == farAway.visible);  // everything beyond a metre fakes two levels
+  for (const render::TreeInstance& i : farAway.instances) CHECK(i.tree % render::kDetailLevels == 2);
   // Standing at the centre looking along +x: the trees behind are culled, and only they.
   render::Camera inside;
   inside.eye = glm::vec3(0.0f, 0.0f, 1.7f);
   inside.target = glm::vec3(1.0f, 0.0f, 1.7f);
-  const render::ForestFrame half = forest.frame(inside, 1.5f, 0.0f);
+  const render::ForestFrame half = forest.frame(inside, 1.5f, {});
   CHECK(half.culled > 0);
   CHECK(half.visible + half.culled == 30);
   std::uint32_t behind = 0;

@@ -68,7 +68,7 @@ std::vector<ForestPlacement> placeTrees(const std::vector<float>& crownRadii, st
 
 Forest::Forest(const vk::VulkanContext& context, const ForestOptions& options, const std::function<void(const std::string&)>& progress) {
   const std::uint32_t kinds = static_cast<std::uint32_t>(options.params.size()) * std::max(1u, options.seeds);
-  const std::uint32_t distinct = std::min({kinds, std::max(1u, options.trees), TreeRenderer::kMaxTrees / 2});
+  const std::uint32_t distinct = std::min({kinds, std::max(1u, options.trees), TreeRenderer::kMaxTrees / kDetailLevels});
   for (std::uint32_t t = 0; t < distinct; ++t) {
     const std::size_t s = t % options.params.size();
     const std::uint64_t seed = options.seed + t / options.params.size();
@@ -78,17 +78,19 @@ Forest::Forest(const vk::VulkanContext& context, const ForestOptions& options, c
     GrowthOptions growth;
     growth.seed = seed;
     const Skeleton skeleton = generateSkeleton(options.params[s], growth);
-    const TreeMesh nearMesh = buildTreeMesh(skeleton);
-    tree.near = uploadTree(context, nearMesh.mesh, buildPatches(nearMesh.mesh), skeleton.leaves);
-    // Far: the deepest level as fake branches over a mesh of the others (the same tree, breadth-first).
-    MeshOptions farOptions;
-    farOptions.levels = std::max(1, skeleton.levels - 1);
-    const TreeMesh farMesh = buildTreeMesh(skeleton, farOptions);
-    const auto impostors = skeleton.levels > 1 ? impostorSegments(skeleton, farOptions.levels) : std::vector<ImpostorSegment>{};
-    tree.far = uploadTree(context, farMesh.mesh, buildPatches(farMesh.mesh), skeleton.leaves, impostors);
-    tree.bounds = tree.near.bounds;
     float reach = 0.0f;
-    for (const glm::vec3& p : nearMesh.mesh.positions) reach = std::max(reach, glm::length(glm::vec2(p)));
+    for (std::uint32_t d = 0; d < kDetailLevels; ++d) {
+      // The deepest d levels as fake branches over a mesh of the others (one skeleton: the same tree).
+      MeshOptions meshOptions;
+      meshOptions.levels = std::max(1, skeleton.levels - static_cast<int>(d));
+      const TreeMesh mesh = buildTreeMesh(skeleton, meshOptions);
+      const auto impostors = meshOptions.levels < skeleton.levels ? impostorSegments(skeleton, meshOptions.levels) : std::vector<ImpostorSegment>{};
+      tree.detail[d] = uploadTree(context, mesh.mesh, buildPatches(mesh.mesh), skeleton.leaves, impostors);
+      if (d == 0) {
+        for (const glm::vec3& p : mesh.mesh.positions) reach = std::max(reach, glm::length(glm::vec2(p)));
+      }
+    }
+    tree.bounds = tree.detail[0].bounds;
     for (const Leaf& leaf : skeleton.leaves) {
       const glm::vec3 p(leaf.position);
       const auto length = static_cast<float>(leaf.length);
@@ -96,8 +98,8 @@ Forest::Forest(const vk::VulkanContext& context, const ForestOptions& options, c
       tree.bounds.lo = glm::min(tree.bounds.lo, p - glm::vec3(length));
       tree.bounds.hi = glm::max(tree.bounds.hi, p + glm::vec3(length));
     }
-    tree.bounds.lo.z -= tree.near.plantingDepth;
-    tree.bounds.hi.z -= tree.near.plantingDepth;
+    tree.bounds.lo.z -= tree.detail[0].plantingDepth;
+    tree.bounds.hi.z -= tree.detail[0].plantingDepth;
     tree.crownRadius = reach;
     trees_.push_back(std::move(tree));
   }
@@ -110,13 +112,12 @@ Forest::Forest(const vk::VulkanContext& context, const ForestOptions& options, c
 std::vector<const GpuTree*> Forest::gpuTrees() const {
   std::vector<const GpuTree*> gpu;
   for (const ForestTree& t : trees_) {
-    gpu.push_back(&t.near);
-    gpu.push_back(&t.far);
+    for (const GpuTree& d : t.detail) gpu.push_back(&d);
   }
   return gpu;
 }
 
-ForestFrame Forest::frame(const Camera& camera, float aspect, float farDistance) const {
+ForestFrame Forest::frame(const Camera& camera, float aspect, const DetailDistances& distances) const {
   const auto planes = frustumPlanes(projectionMatrix(camera, aspect) * viewMatrix(camera));
   ForestFrame f;
   for (const ForestPlacement& p : placements_) {
@@ -129,10 +130,11 @@ ForestFrame Forest::frame(const Camera& camera, float aspect, float farDistance)
       ++f.culled;
       continue;
     }
-    const bool isFar = farDistance > 0.0f && glm::distance(camera.eye, center) - radius > farDistance;
-    f.far += isFar ? 1 : 0;
+    const float distance = std::max(0.0f, glm::distance(camera.eye, center) - radius);
+    const std::uint32_t detail = distance < distances.full ? 0u : distance < distances.reduced ? 1u : 2u;
+    ++f.perDetail[detail];
     ++f.visible;
-    f.instances.push_back({2 * p.tree + (isFar ? 1u : 0u), placementModel(p, tree.near.plantingDepth)});
+    f.instances.push_back({kDetailLevels * p.tree + detail, placementModel(p, tree.detail[0].plantingDepth)});
   }
   return f;
 }

@@ -2,6 +2,7 @@
 // A forest for the walkthrough: a few distinct trees (species x seed), each grown once, meshed at two levels
 // of detail and instanced many times; placed without overlapping crowns; each frame the visible instances
 // with the level of detail their distance asks for.
+#include <array>
 #include <functional>
 #include <memory>
 #include <string>
@@ -21,10 +22,19 @@ struct ForestOptions {
   std::uint64_t seed = 1;            // first seed; also drives the placement
 };
 
-// One distinct tree on the GPU, near (every level meshed) and far (the deepest level as fake branches).
+// Levels of detail of each distinct tree: every stem level meshed; the deepest level as fake branches; the
+// two deepest (the mesh keeps at least the trunk).
+constexpr std::uint32_t kDetailLevels = 3;
+
+// Up to `full` metres (to the crown's nearest point) the whole mesh, up to `reduced` one level faked, beyond
+// two; 0 skips a tier.
+struct DetailDistances {
+  float full = 40.0f, reduced = 150.0f;
+};
+
 struct ForestTree {
   std::string label;
-  GpuTree near, far;
+  std::array<GpuTree, kDetailLevels> detail;
   float crownRadius = 0.0f;   // horizontal reach of mesh and leaves from the trunk
   Bounds bounds;              // planted, object space, with the leaves
 };
@@ -36,8 +46,9 @@ struct ForestPlacement {
 };
 
 struct ForestFrame {
-  std::vector<TreeInstance> instances;   // tree index: 2 t (near) or 2 t + 1 (far)
-  std::uint32_t visible = 0, far = 0, culled = 0;
+  std::vector<TreeInstance> instances;   // tree index: kDetailLevels t + detail
+  std::uint32_t visible = 0, culled = 0;
+  std::array<std::uint32_t, kDetailLevels> perDetail{};
 };
 
 class Forest {
@@ -45,14 +56,14 @@ class Forest {
   // Grows, meshes and uploads the distinct trees (progress: one line per tree) and places the instances.
   Forest(const vk::VulkanContext& context, const ForestOptions& options, const std::function<void(const std::string&)>& progress);
 
-  // For TreeRenderer::setTrees: near and far of each distinct tree, in that order.
+  // For TreeRenderer::setTrees: the details of each distinct tree, in that order.
   std::vector<const GpuTree*> gpuTrees() const;
   const std::vector<ForestTree>& trees() const { return trees_; }
   const std::vector<ForestPlacement>& placements() const { return placements_; }
   float radius() const { return radius_; }  // of the planted area
 
-  // The instances inside the view frustum; beyond `farDistance` metres (0: never) the far level of detail.
-  ForestFrame frame(const Camera& camera, float aspect, float farDistance) const;
+  // The instances inside the view frustum, each with the detail its distance asks for.
+  ForestFrame frame(const Camera& camera, float aspect, const DetailDistances& distances) const;
 
   // A camera that sees the whole forest (or the single tree) from the default side.
   Camera overview(float aspect) const;

@@ -40,11 +40,12 @@ struct ViewOptions {
   std::string mode = "acc";
   float tess = 0.0f;
   float adaptive = 8.0f;
+  float maxTess = 0.0f;
   float displace = 0.0f;
   bool noLeaves = false;
-  float leafLod = 30.0f;
+  float leafLod = 60.0f;
   int shadowLeaves = 0;
-  float farDistance = 60.0f;
+  std::string detail;  // "FULL,REDUCED" metres; empty: by device
   std::string light = "25,40";
   std::string cameraPath;
   int frames = 0;
@@ -60,7 +61,7 @@ struct ViewOptions {
 // What the overlay changes while the viewer runs.
 struct ViewState {
   render::RenderSettings settings;
-  float farDistance = 60.0f;
+  render::DetailDistances detail;
   float lightAzimuth = 25.0f, lightElevation = 40.0f;
   bool showOverlay = true;
   bool regenerate = false;
@@ -126,8 +127,8 @@ void drawPanel(ViewState& state, const render::ForestFrame& frame, const render:
   ImGui::Text("frame %.2f ms (%.0f fps)", static_cast<double>(last), last > 0.0f ? 1000.0 / static_cast<double>(last) : 0.0);
   ImGui::PlotLines("ms", state.frameTimes.data(), static_cast<int>(state.frameTimes.size()), static_cast<int>(state.frameIndex), nullptr,
                    0.0f, FLT_MAX, ImVec2(0, 60));
-  ImGui::Text("triangles %llu, trees %u visible (%u far), %u culled", static_cast<unsigned long long>(stats.triangles), frame.visible,
-              frame.far, frame.culled);
+  ImGui::Text("triangles %llu, %u trees drawn, %u culled", static_cast<unsigned long long>(stats.triangles), frame.visible, frame.culled);
+  ImGui::Text("detail: %u full, %u one level faked, %u two", frame.perDetail[0], frame.perDetail[1], frame.perDetail[2]);
   render::RenderSettings& s = state.settings;
   int mode = static_cast<int>(s.mode);
   ImGui::Combo("mode", &mode, "flat\0pn\0acc\0");
@@ -148,7 +149,8 @@ void drawPanel(ViewState& state, const render::ForestFrame& frame, const render:
   int shadow = static_cast<int>(s.shadowLeaves);
   ImGui::SliderInt("shadow leaves", &shadow, 0, 500);
   s.shadowLeaves = static_cast<std::uint32_t>(shadow);
-  ImGui::SliderFloat("impostors beyond (m)", &state.farDistance, 0.0f, 300.0f);
+  ImGui::SliderFloat("full mesh within (m)", &state.detail.full, 0.0f, 300.0f);
+  ImGui::SliderFloat("one level faked within (m)", &state.detail.reduced, 0.0f, 600.0f);
   ImGui::SliderFloat("sun azimuth", &state.lightAzimuth, -180.0f, 180.0f);
   ImGui::SliderFloat("sun elevation", &state.lightElevation, -10.0f, 90.0f);
   s.lightDirection = render::sunDirection(state.lightAzimuth, state.lightElevation);
@@ -170,6 +172,20 @@ void drawPanel(ViewState& state, const render::ForestFrame& frame, const render:
   ImGui::Text("WASD move, right mouse look, Shift fast, Q/E down/up");
   ImGui::Text("Tab orbit/walk, F11 fullscreen, F12 screenshot, F1 panel");
   ImGui::End();
+}
+
+std::string describe(const render::ForestFrame& f) {
+  return std::to_string(f.visible) + " trees (detail " + std::to_string(f.perDetail[0]) + "/" + std::to_string(f.perDetail[1]) + "/" +
+         std::to_string(f.perDetail[2]) + ", " + std::to_string(f.culled) + " culled)";
+}
+
+// "FULL,REDUCED" in metres; empty: what the device affords. Lavapipe tessellates the whole mesh of a large
+// tree in seconds, so there the nearest trees already fake their deepest level.
+render::DetailDistances parseDetail(const std::string& text, bool lavapipe) {
+  if (text.empty()) return lavapipe ? render::DetailDistances{0.0f, 15.0f} : render::DetailDistances{};
+  const std::vector<float> v = parseNumbers(text, "--detail", 0.0f, 100000.0f);
+  if (v.size() != 2 || v[1] < v[0]) throw SpeciesError(text, "--detail", "expected FULL,REDUCED metres with FULL <= REDUCED, e.g. 40,150");
+  return {v[0], v[1]};
 }
 
 // The ground fades into the horizon beyond the forest as seen from the eye.
@@ -198,6 +214,7 @@ int runOffscreen(const ViewOptions& o, ViewState& state, const std::vector<Speci
   contextOptions.validation = validationWanted(o.validation);
   contextOptions.device = o.device;
   vk::VulkanContext context(contextOptions);
+  state.detail = parseDetail(o.detail, context.isLavapipe());
   render::RenderSession session(context, width, height, VK_SAMPLE_COUNT_1_BIT, render::loadTreeTextures(assetDirectory()));
   const render::Forest forest(context, forestOptions(o, params), progressLine);
   session.renderer().setTrees(forest.gpuTrees());
@@ -208,10 +225,10 @@ int runOffscreen(const ViewOptions& o, ViewState& state, const std::vector<Speci
   for (int f = 0; f < frames; ++f) {
     const render::Camera camera = cameraOnPath(keys, f, frames);
     state.settings.groundRadius = groundRadius(forest, camera);
-    const render::ForestFrame visible = forest.frame(camera, aspect, state.farDistance);
+    const render::ForestFrame visible = forest.frame(camera, aspect, state.detail);
     const render::FrameResult r = session.render(camera, state.settings, visible.instances);
-    std::fprintf(stderr, "arbor view: frame %d/%d: %u trees (%u far, %u culled), %llu triangles, %.1f ms\n", f + 1, frames, visible.visible,
-                 visible.far, visible.culled, static_cast<unsigned long long>(r.gpu.triangles), r.cpuMilliseconds);
+    std::fprintf(stderr, "arbor view: frame %d/%d: %s, %llu triangles, %.1f ms\n", f + 1, frames, describe(visible).c_str(),
+                 static_cast<unsigned long long>(r.gpu.triangles), r.cpuMilliseconds);
     if ((f + 1) % every == 0 || f + 1 == frames) {
       written.push_back(screenshotName(o.out, f + 1));
       writePng(written.back(), session.image());
@@ -236,6 +253,7 @@ int runWindow(const ViewOptions& o, ViewState& state, std::vector<SpeciesParams>
   contextOptions.instanceExtensions = window::requiredInstanceExtensions();
   contextOptions.deviceExtensions = {VK_KHR_SWAPCHAIN_EXTENSION_NAME};
   vk::VulkanContext context(contextOptions);
+  state.detail = parseDetail(o.detail, context.isLavapipe());
   const VkSurfaceKHR surface = win.createSurface(context.instance());
   int status = 0;
   {
@@ -273,7 +291,8 @@ int runWindow(const ViewOptions& o, ViewState& state, std::vector<SpeciesParams>
       const VkExtent2D size = win.framebufferSize();
       if (size.width == 0 || size.height == 0) continue;  // minimised in a script: nothing to draw into
       const auto now = std::chrono::steady_clock::now();
-      const float seconds = std::min(0.25f, std::chrono::duration<float>(now - last).count());
+      const float elapsed = std::chrono::duration<float>(now - last).count();
+      const float seconds = std::min(0.25f, elapsed);  // a slow frame must not throw the walker far
       last = now;
       bool screenshot = scripted && ((f + 1) % every == 0 || f + 1 == frames);
       if (!scripted) {
@@ -304,7 +323,7 @@ int runWindow(const ViewOptions& o, ViewState& state, std::vector<SpeciesParams>
       const render::Camera camera = scripted ? cameraOnPath(path.empty() ? std::vector<render::Camera>{view.camera()} : path, f, frames)
                                              : view.camera();
       state.settings.groundRadius = groundRadius(*forest, camera);
-      visible = forest->frame(camera, aspectOf(swapchain.extent()), state.farDistance);
+      visible = forest->frame(camera, aspectOf(swapchain.extent()), state.detail);
       if (state.showOverlay) {
         overlay.newFrame();
         drawPanel(state, visible, stats, params, o.species, context.deviceDescription());
@@ -323,7 +342,7 @@ int runWindow(const ViewOptions& o, ViewState& state, std::vector<SpeciesParams>
       if (screenshot) swapchain.recordScreenshot(cmd);
       const bool current = swapchain.endFrame();
       stats = renderer.stats();
-      const float ms = seconds * 1000.0f;
+      const float ms = elapsed * 1000.0f;
       if (f > 0) frameMs.push_back(ms);
       state.frameTimes[state.frameIndex] = ms;
       state.frameIndex = (state.frameIndex + 1) % state.frameTimes.size();
@@ -334,8 +353,8 @@ int runWindow(const ViewOptions& o, ViewState& state, std::vector<SpeciesParams>
         std::printf("wrote %s\n", name.c_str());
       }
       if (scripted) {
-        std::fprintf(stderr, "arbor view: frame %d/%d: %u trees (%u far, %u culled), %llu triangles\n", f + 1, frames, visible.visible,
-                     visible.far, visible.culled, static_cast<unsigned long long>(stats.triangles));
+        std::fprintf(stderr, "arbor view: frame %d/%d: %s, %llu triangles\n", f + 1, frames, describe(visible).c_str(),
+                     static_cast<unsigned long long>(stats.triangles));
       }
       if (!current) swapchain.recreate(win.framebufferSize());
       if (state.regenerate) {
@@ -369,14 +388,15 @@ int runView(const ViewOptions& o) {
   s.mode = parseMode(o.mode);
   s.tessLevel = o.tess > 0.0f ? o.tess : 8.0f;
   s.adaptivePixels = o.tess > 0.0f ? 0.0f : o.adaptive;
+  if (o.maxTess > 0.0f) s.maxLevel = o.maxTess;
   s.displacement = o.displace;
   s.leaves = !o.noLeaves;
-  s.impostors = true;  // drawn by the far trees only: the near ones have none
+  s.impostors = true;  // only the reduced details have fake branches
   s.leafLodDistance = o.leafLod;
   s.shadowLeaves = static_cast<std::uint32_t>(o.shadowLeaves);
   s.lightDirection = parseLight(o.light);
   std::sscanf(o.light.c_str(), "%f,%f", &state.lightAzimuth, &state.lightElevation);
-  state.farDistance = o.farDistance;
+  parseDetail(o.detail, false);  // bad input fails before anything is grown
   std::uint32_t width = 0, height = 0;
   parseSize(o.size, width, height);  // bad input fails before anything is grown
   parseEvents(o.events);
@@ -407,11 +427,13 @@ void addViewCommand(CLI::App& app, Action& action) {
   cmd->add_option("--mode", o->mode, "flat, pn, acc")->capture_default_str();
   cmd->add_option("--tess", o->tess, "Uniform tessellation factor (default: adaptive)")->check(CLI::Range(1.0, 64.0));
   cmd->add_option("--adaptive", o->adaptive, "Adaptive tessellation: target edge length in pixels")->check(CLI::Range(0.5, 1000.0))->capture_default_str();
+  cmd->add_option("--max-tess", o->maxTess, "Largest adaptive factor (default 64; lavapipe: 16, it splits draws by the largest)")
+      ->check(CLI::Range(1.0, 64.0));
   cmd->add_option("--displace", o->displace, "Displacement scale")->check(CLI::Range(-10.0, 10.0));
   cmd->add_flag("--no-leaves", o->noLeaves, "Leave the leaves out");
   cmd->add_option("--leaf-lod", o->leafLod, "All leaves up to this distance (m), then thinning (0: all)")->check(CLI::Range(0.0, 10000.0))->capture_default_str();
   cmd->add_option("--shadow-leaves", o->shadowLeaves, "Leaf self-shadowing against this many leaves")->check(CLI::Range(0, 4096))->capture_default_str();
-  cmd->add_option("--far", o->farDistance, "Trees beyond this distance (m) switch to fake branches (0: never)")->check(CLI::Range(0.0, 100000.0))->capture_default_str();
+  cmd->add_option("--detail", o->detail, "FULL,REDUCED metres: whole mesh within FULL, deepest level faked within REDUCED, two beyond (default 40,150; lavapipe 0,15)");
   cmd->add_option("--light", o->light, "Sun direction AZIMUTH,ELEVATION in degrees")->capture_default_str();
   cmd->add_option("--camera-path", o->cameraPath, "Scripted: cameras ex,ey,ez,tx,ty,tz[,fov], one per line, visited over --frames");
   cmd->add_option("--frames", o->frames, "Scripted: render this many frames, then exit (default with a path: 60)")->check(CLI::Range(1, 100000));
