@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# The main job: installs what is missing, builds, grows the demo tree, writes its skeleton and mesh, and renders
-# it offscreen with GPU tessellation (lavapipe when there is no GPU) to PNG files in out/.
+# The main job: installs what is missing, builds, and opens the walkthrough viewer on a forest (with no display
+# it renders the same scene offscreen to PNG files in out/view and says so); then writes the tupelo's skeleton
+# and mesh and renders close-ups with GPU tessellation (lavapipe when there is no GPU) to PNG files in out/.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 bash "$root/tools/install-deps.sh"
@@ -8,6 +9,7 @@ bash "$root/tools/build.sh"
 arbor="$root/build/tools/arbor"
 out="$root/out"
 mkdir -p "$out"
+"$arbor" view black-tupelo quaking-aspen ca-black-oak --forest 30 --seed 1 --out "$out/view"
 "$arbor" generate black-tupelo --seed 1 --quiet --out "$out/black-tupelo.json"
 "$arbor" generate black-tupelo --seed 1 --out "$out/black-tupelo.glb"
 # The whole tree in leaf, adaptive ACC, self-shadowed; a close-up of the displaced bark; the tessellation

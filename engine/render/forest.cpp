@@ -150,4 +150,23 @@ Camera Forest::overview(float aspect) const {
   return frameBounds(Bounds{glm::vec3(-r, -r, 0.0f), glm::vec3(r, r, top)}, 25.0f, 20.0f, aspect);
 }
 
+std::vector<Camera> Forest::tour(float aspect) const {
+  std::vector<Camera> stops{overview(aspect)};
+  const ForestTree& first = trees_.front();
+  if (placements_.size() == 1) {
+    for (float azimuth : {115.0f, 205.0f}) stops.push_back(frameBounds(first.bounds, azimuth, 6.0f, aspect));
+    return stops;
+  }
+  const float eyeHeight = 1.7f, crownMiddle = 0.6f * first.bounds.hi.z;
+  Camera edge;
+  edge.eye = glm::vec3(0.0f, -(radius_ + first.crownRadius + 6.0f), eyeHeight);
+  edge.target = glm::vec3(0.0f, 0.0f, crownMiddle);
+  stops.push_back(edge);
+  Camera inside;
+  inside.eye = glm::vec3(0.5f * first.crownRadius + 1.0f, -1.5f * first.crownRadius - 1.0f, eyeHeight);
+  inside.target = glm::vec3(0.0f, 0.0f, crownMiddle);
+  stops.push_back(inside);
+  return stops;
+}
+
 }  // namespace arbor::render

@@ -67,6 +67,9 @@ class Forest {
 
   // A camera that sees the whole forest (or the single tree) from the default side.
   Camera overview(float aspect) const;
+  // Stops of a short tour: the overview, then (a forest) its edge and its middle at eye height, or (one
+  // tree) two more sides of it.
+  std::vector<Camera> tour(float aspect) const;
 
  private:
   std::vector<ForestTree> trees_;

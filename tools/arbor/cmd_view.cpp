@@ -208,6 +208,7 @@ void beginPass(VkCommandBuffer cmd, VkRenderPass pass, VkFramebuffer framebuffer
 // No display (or --offscreen): the same scene through the offscreen target, every screenshot a PNG.
 int runOffscreen(const ViewOptions& o, ViewState& state, const std::vector<SpeciesParams>& params, const std::vector<render::Camera>& path,
                  int frames, int every) {
+  const bool tour = o.frames <= 0 && path.empty();
   std::uint32_t width = 0, height = 0;
   parseSize(o.size, width, height);
   vk::ContextOptions contextOptions;
@@ -219,7 +220,8 @@ int runOffscreen(const ViewOptions& o, ViewState& state, const std::vector<Speci
   const render::Forest forest(context, forestOptions(o, params), progressLine);
   session.renderer().setTrees(forest.gpuTrees());
   const float aspect = static_cast<float>(width) / static_cast<float>(height);
-  const std::vector<render::Camera> keys = path.empty() ? std::vector<render::Camera>{forest.overview(aspect)} : path;
+  const std::vector<render::Camera> keys = path.empty() ? forest.tour(aspect) : path;
+  if (path.empty() && frames <= 1) frames = static_cast<int>(keys.size());  // one picture per stop of the tour
   fs::create_directories(o.out);
   std::vector<std::string> written;
   for (int f = 0; f < frames; ++f) {
@@ -229,7 +231,7 @@ int runOffscreen(const ViewOptions& o, ViewState& state, const std::vector<Speci
     const render::FrameResult r = session.render(camera, state.settings, visible.instances);
     std::fprintf(stderr, "arbor view: frame %d/%d: %s, %llu triangles, %.1f ms\n", f + 1, frames, describe(visible).c_str(),
                  static_cast<unsigned long long>(r.gpu.triangles), r.cpuMilliseconds);
-    if ((f + 1) % every == 0 || f + 1 == frames) {
+    if (tour || (f + 1) % every == 0 || f + 1 == frames) {
       written.push_back(screenshotName(o.out, f + 1));
       writePng(written.back(), session.image());
     }
@@ -320,7 +322,7 @@ int runWindow(const ViewOptions& o, ViewState& state, std::vector<SpeciesParams>
         view.update(in, seconds, forest->radius() + forest->trees().front().crownRadius);
       }
       if (size.width != swapchain.extent().width || size.height != swapchain.extent().height) swapchain.recreate(size);
-      const render::Camera camera = scripted ? cameraOnPath(path.empty() ? std::vector<render::Camera>{view.camera()} : path, f, frames)
+      const render::Camera camera = scripted ? cameraOnPath(path.empty() ? forest->tour(aspectOf(swapchain.extent())) : path, f, frames)
                                              : view.camera();
       state.settings.groundRadius = groundRadius(*forest, camera);
       visible = forest->frame(camera, aspectOf(swapchain.extent()), state.detail);
