@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <nlohmann/json.hpp>
 #include <sys/wait.h>
@@ -260,6 +261,46 @@ TEST_CASE("bench leaves adds two triangles per leaf to the tree alone, with and 
   CHECK(table[2][1] == 16);
 }
 
+TEST_CASE("bench tess measures the ceiling and the CPU-subdivided mesh with the same triangles, and plots", "[cli][render]") {
+  const std::string csv = arbor::test::tempPath("bench-tess.csv"), plot = arbor::test::tempPath("bench-tess.png");
+  fs::remove(csv);
+  fs::remove(plot);
+  const Result r = run("bench tess palm --levels 1 --modes flat,acc --factors 1,2,4 --size 64x48 --frames 1 --subdivide-up-to 4 --csv " +
+                       csv + " --plot " + plot);
+  INFO(r.output);
+  REQUIRE(r.exitCode == 0);
+  CHECK_THAT(r.output, Catch::Contains("of ceiling"));
+  CHECK_THAT(r.output, Catch::Contains("[7/7]"));  // progress: three ceiling cells, flat, three ACC cells
+  std::map<std::string, unsigned long long> triangles;  // "mode xfactor"
+  std::istringstream rows(arbor::readFile(csv));
+  std::string line;
+  std::getline(rows, line);
+  while (std::getline(rows, line)) {
+    char mode[32] = {};
+    double factor = 0, adaptive = 0, displacement = 0;
+    unsigned long long count = 0;
+    REQUIRE(std::sscanf(line.c_str(), "%31[^,],%lf,%lf,%lf,%llu", mode, &factor, &adaptive, &displacement, &count) == 5);
+    triangles[std::string(mode) + " x" + std::to_string(static_cast<int>(factor))] = count;
+  }
+  for (int f : {1, 2, 4}) {
+    INFO("factor " << f);
+    const std::string x = " x" + std::to_string(f);
+    REQUIRE(triangles.count("acc" + x));
+    CHECK(triangles["acc" + x] == triangles["flat x1"] * static_cast<unsigned long long>(f * f));  // 2 f^2 per quad
+    CHECK(triangles["ceiling" + x] == triangles["acc" + x]);
+    CHECK(triangles["cpu-subdivided" + x] == triangles["acc" + x]);  // 2^k refinements, 4^k quads each
+  }
+  CHECK(pngSize(plot) == std::make_pair(1120u, 420u));
+}
+
+TEST_CASE("bench tess on a forest of instanced trees", "[cli][render]") {
+  const Result r = run("bench tess palm --scene forest 4 --modes acc --factors 2 --size 64x48 --frames 1 --no-ceiling");
+  INFO(r.output);
+  REQUIRE(r.exitCode == 0);
+  CHECK_THAT(r.output, Catch::Contains("trees in view"));
+  CHECK_THAT(r.output, Catch::Contains("| acc x2 |"));
+}
+
 TEST_CASE("textures and bench tess refuse values out of range with 2", "[cli]") {
   const Result size = run("textures --size 100 --out " + arbor::test::tempPath("textures-bad"));
   CHECK(size.exitCode == 2);
@@ -270,6 +311,9 @@ TEST_CASE("textures and bench tess refuse values out of range with 2", "[cli]") 
   const Result modes = run("bench tess palm --modes acc,magic");
   CHECK(modes.exitCode == 2);
   CHECK_THAT(modes.output, Catch::Contains("--modes"));
+  const Result scene = run("bench tess palm --scene meadow");
+  CHECK(scene.exitCode == 2);
+  CHECK_THAT(scene.output, Catch::Contains("--scene"));
   const Result counts = run("bench leaves palm --counts 10,many");
   CHECK(counts.exitCode == 2);
   CHECK_THAT(counts.output, Catch::Contains("--counts"));

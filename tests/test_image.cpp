@@ -11,6 +11,7 @@
 #include "image/bark_texture.hpp"
 #include "image/image_compare.hpp"
 #include "image/leaf_atlas.hpp"
+#include "image/plot.hpp"
 #include "image/png_io.hpp"
 #include "test_support.hpp"
 
@@ -321,4 +322,41 @@ TEST_CASE("the leaf atlas is deterministic and the committed copy is what the ge
   CHECK_THROWS_AS(makeLeafAtlas(100, 1), std::invalid_argument);
   const Image committed = readPng((std::filesystem::path(ARBOR_ASSET_DIR) / "textures" / "leaf_atlas.png").string());
   CHECK(committed.rgba == atlas512().rgba);
+}
+
+TEST_CASE("a plot draws each series in its colour along a rising line, with a legend, panels side by side", "[image][plot]") {
+  PlotPanel panel{"Title", "factor", "ms", {}};
+  panel.series.push_back({"rising", {1, 2, 4, 8}, {1, 10, 100, 1000}, {200, 0, 0}});
+  panel.series.push_back({"flat", {1, 8}, {5, 5}, {0, 0, 200}});
+  panel.series.push_back({"nothing", {0, -1}, {1, 2}, {0, 200, 0}});  // not on a log axis: left out
+  const Image image = plotPanels({panel, panel}, 300, 200);
+  REQUIRE(image.width == 600);
+  REQUIRE(image.height == 200);
+  const auto count = [&](std::array<std::uint8_t, 3> c, int x0, int x1) {
+    int n = 0;
+    for (int y = 0; y < image.height; ++y)
+      for (int x = x0; x < x1; ++x) {
+        const std::size_t i = 4 * (static_cast<std::size_t>(y) * 600 + static_cast<std::size_t>(x));
+        n += image.rgba[i] == c[0] && image.rgba[i + 1] == c[1] && image.rgba[i + 2] == c[2] ? 1 : 0;
+      }
+    return n;
+  };
+  CHECK(count({200, 0, 0}, 0, 300) > 200);
+  CHECK(count({0, 0, 200}, 0, 300) > 200);
+  CHECK(count({0, 200, 0}, 0, 300) > 0);   // only its legend swatch
+  CHECK(count({0, 200, 0}, 0, 300) < 100);
+  CHECK(count({200, 0, 0}, 0, 300) == count({200, 0, 0}, 300, 600));  // the second panel is the same
+  // The rising series climbs from the bottom left to the top right: its red pixels on the left half are
+  // lower in the picture than those on the right half.
+  double leftY = 0, rightY = 0, left = 0, right = 0;
+  for (int y = 0; y < 200; ++y)
+    for (int x = 0; x < 300; ++x) {
+      const std::size_t i = 4 * (static_cast<std::size_t>(y) * 600 + static_cast<std::size_t>(x));
+      if (image.rgba[i] != 200 || image.rgba[i + 1] != 0 || x > 200) continue;  // the legend sits at the right
+      (x < 120 ? leftY : rightY) += y;
+      (x < 120 ? left : right) += 1;
+    }
+  REQUIRE(left > 0);
+  REQUIRE(right > 0);
+  CHECK(leftY / left > rightY / right);
 }

@@ -12,6 +12,9 @@
 #include "spirv_leaf_frag.h"
 #include "spirv_leaf_geom.h"
 #include "spirv_point_vert.h"
+#include "spirv_ceiling_tesc.h"
+#include "spirv_ceiling_tese.h"
+#include "spirv_ceiling_frag.h"
 #include "spirv_impostor_geom.h"
 #include "spirv_impostor_frag.h"
 #include "spirv_pn_tesc.h"
@@ -149,7 +152,7 @@ VkPipeline build(VkDevice device, VkRenderPass renderPass, VkPipelineLayout layo
 
 void Pipelines::destroy(VkDevice device) {
   for (VkPipeline p : {sky, ground, tree[0], tree[1], tree[2], wireframe[0], wireframe[1], wireframe[2], twoSided[0],
-                       twoSided[1], twoSided[2], leaves, impostors}) {
+                       twoSided[1], twoSided[2], leaves, impostors, ceiling}) {
     if (p) vkDestroyPipeline(device, p, nullptr);
   }
   if (layout) vkDestroyPipelineLayout(device, layout, nullptr);
@@ -208,6 +211,11 @@ Pipelines createPipelines(const vk::VulkanContext& context, VkRenderPass renderP
   PipelineSpec acc{{stage(VK_SHADER_STAGE_VERTEX_BIT, spirv_acc_vert), stage(VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, spirv_acc_tesc),
                     stage(VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, spirv_acc_tese), treeFrag}};
   acc.patchPoints = 4;  // the quad's corners; the 1-ring comes from the points buffer
+  PipelineSpec ceiling{{stage(VK_SHADER_STAGE_VERTEX_BIT, spirv_acc_vert), stage(VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, spirv_ceiling_tesc),
+                        stage(VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, spirv_ceiling_tese),
+                        stage(VK_SHADER_STAGE_FRAGMENT_BIT, spirv_ceiling_frag)}};
+  ceiling.patchPoints = 4;
+  p.ceiling = build(device, renderPass, p.layout, samples, ceiling);
   const PipelineSpec* specs[3] = {&flat, &pn, &acc};
   for (int m = 0; m < 3; ++m) {
     p.tree[m] = build(device, renderPass, p.layout, samples, *specs[m]);

@@ -17,6 +17,7 @@ struct Pipelines {
   VkPipeline twoSided[3] = {};   // no culling: back faces seen through cracks show (crack tests)
   VkPipeline leaves = VK_NULL_HANDLE;     // null where the device has no geometry shaders
   VkPipeline impostors = VK_NULL_HANDLE;  // fake branches; null likewise
+  VkPipeline ceiling = VK_NULL_HANDLE;    // ACC's patches with trivial stages (bench tess)
   VkShaderStageFlags pushStages = 0;   // every stage the layout's push constants and bindings reach
 
   void destroy(VkDevice device);

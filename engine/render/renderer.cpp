@@ -251,7 +251,8 @@ void TreeRenderer::draw(VkCommandBuffer cmd, VkExtent2D extent, const RenderSett
   lastDraws_ = 0;
   for (const TreeInstance& instance : instances) {
     if (instance.tree >= trees_.size()) throw std::out_of_range("tree instance names tree " + std::to_string(instance.tree));
-    drewTree_ = drewTree_ || trees_[instance.tree]->patchCount > 0;
+    const GpuTree& tree = *trees_[instance.tree];
+    drewTree_ = drewTree_ || (s.mode == RenderMode::ACC ? tree.patchCount : tree.triangles) > 0;
   }
   if (!drewTree_) return;
 
@@ -290,7 +291,10 @@ void TreeRenderer::draw(VkCommandBuffer cmd, VkExtent2D extent, const RenderSett
   for (const TreeInstance& instance : instances) {
     const GpuTree& tree = *trees_[instance.tree];
     bindTree(instance.tree, instance.model);
-    drawMesh(tree, s.revealBackFaces ? pipelines_.twoSided[mode] : pipelines_.tree[mode]);
+    const VkPipeline mesh = s.ceiling && s.mode == RenderMode::ACC ? pipelines_.ceiling
+                            : s.revealBackFaces                       ? pipelines_.twoSided[mode]
+                                                                      : pipelines_.tree[mode];
+    drawMesh(tree, mesh);
     if (s.impostors && tree.impostorCount > 0 && pipelines_.impostors) drawPoints(pipelines_.impostors, tree.impostorCount);
     if (s.leaves && tree.leafCount > 0 && pipelines_.leaves) {
       // The geometry stage keeps a leaf when its rank (i + 1/2) / N is within the density: the rest need no draw.

@@ -35,6 +35,7 @@ struct RenderSettings {
   float leafLodDistance = 0.0f;   // > 0: all leaves up to this distance (m), then thinning with distance squared
   std::uint32_t shadowLeaves = 0; // self-shadowing: each leaf tests the first this many leaves
   bool impostors = false;         // draw the fake branches (needs geometry shaders)
+  bool ceiling = false;           // ACC mode with trivial stages: the device's bare tessellation rate (bench)
   float groundRadius = 0.0f;     // > 0: the ground fades into the horizon this far from the eye (forests)
   bool revealBackFaces = false;  // draw back faces too, in magenta: on a closed surface any that shows is a crack
   std::uint32_t patchesPerDraw = 0;  // > 0: split tree draws into this many patches (tests); 0: what the driver needs

@@ -45,12 +45,14 @@ Figures summarize(std::vector<double> v) {
 
 }  // namespace
 
-TimedFrames timeFrames(render::RenderSession& session, const render::Camera& camera, const render::RenderSettings& settings, int frames) {
+TimedFrames timeFrames(render::RenderSession& session, const render::Camera& camera, const render::RenderSettings& settings, int frames,
+                       const std::vector<render::TreeInstance>* instances) {
   std::vector<double> cpu, gpu;
   TimedFrames t;
-  t.last = session.render(camera, settings);  // warm-up: pipelines, caches
+  const auto frame = [&] { return instances ? session.render(camera, settings, *instances) : session.render(camera, settings); };
+  t.last = frame();  // warm-up: pipelines, caches
   for (int f = 0; f < frames; ++f) {
-    t.last = session.render(camera, settings);
+    t.last = frame();
     cpu.push_back(t.last.cpuMilliseconds);
     if (t.last.gpu.hasTime) gpu.push_back(t.last.gpu.gpuMilliseconds);
   }

@@ -22,7 +22,8 @@ struct TimedFrames {
   render::FrameResult last;
 };
 
-// One warm-up frame, then `frames` timed ones.
-TimedFrames timeFrames(render::RenderSession& session, const render::Camera& camera, const render::RenderSettings& settings, int frames);
+// One warm-up frame, then `frames` timed ones: the session's tree, or the renderer's trees at `instances`.
+TimedFrames timeFrames(render::RenderSession& session, const render::Camera& camera, const render::RenderSettings& settings, int frames,
+                       const std::vector<render::TreeInstance>* instances = nullptr);
 
 }  // namespace arbor::cli

@@ -1,16 +1,22 @@
-// arbor bench tess: frame time and triangles generated per mode and tessellation factor, on one tree.
+// arbor bench tess: frame time and triangles generated per mode and tessellation factor, on one tree or a
+// forest; against the device's ceiling (trivial stages) and against subdividing on the CPU with OpenSubdiv.
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <memory>
+#include <numeric>
 #include <sstream>
 
 #include "assets.hpp"
 #include "bench_support.hpp"
 #include "commands.hpp"
+#include "export/subdivide.hpp"
 #include "growth/weber_penn.hpp"
+#include "image/plot.hpp"
 #include "mesh/tree_mesh.hpp"
+#include "render/forest.hpp"
 #include "render/render_session.hpp"
 #include "render_options.hpp"
 
@@ -30,6 +36,10 @@ struct BenchTessOptions {
   std::string device;
   bool validation = false;
   std::string csv;
+  std::string plot;
+  std::vector<std::string> scene;  // "tree" or "forest" [N]
+  bool noCeiling = false;
+  int subdivideUpTo = 8;           // CPU-subdivision comparison up to this ACC factor (0: none)
 };
 
 // One column of the table: a mode with a uniform factor or an adaptive pixel target.
@@ -69,67 +79,249 @@ std::vector<Cell> makeCells(const BenchTessOptions& o) {
   return cells;
 }
 
+// One measured cell: what the table, the CSV and the plot show.
+struct Measured {
+  std::string label, mode;
+  float factor = 0.0f, adaptive = 0.0f, displacement = 0.0f;
+  std::uint64_t triangles = 0;
+  TimedFrames timed;
+  double seconds = 0.0;  // the frame time used for rates: GPU timestamps, or the host's on lavapipe
+  double rate = 0.0;     // M triangles/s
+};
+
+double mib(std::size_t bytes) { return static_cast<double>(bytes) / (1024.0 * 1024.0); }
+
+double msSince(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t).count();
+}
+
+// The scene: one tree framed, or a forest of instanced trees seen from above its edge.
+struct BenchScene {
+  std::unique_ptr<render::Forest> forest;
+  std::vector<render::TreeInstance> instances;
+  render::Camera camera;
+  std::size_t bytes = 0, quads = 0;
+  std::string description;
+};
+
 int runBenchTess(const BenchTessOptions& o) {
   std::uint32_t width = 0, height = 0;
   parseSize(o.size, width, height);
   const std::vector<Cell> cells = makeCells(o);
+  const bool forestScene = !o.scene.empty() && o.scene.front() == "forest";
+  if (!o.scene.empty() && o.scene.front() != "tree" && !forestScene) {
+    throw SpeciesError(o.scene.front(), "--scene", "allowed: tree, or forest N (N trees, 1 to 1000)");
+  }
+  std::uint32_t forestTrees = 30;
+  if (forestScene && o.scene.size() > 1) {
+    const std::vector<float> n = parseNumbers(o.scene[1], "--scene", 1.0f, 1000.0f);
+    if (n.size() != 1) throw SpeciesError(o.scene[1], "--scene", "forest takes one tree count, 1 to 1000");
+    forestTrees = static_cast<std::uint32_t>(n.front());
+  }
   std::ofstream csv;
   if (!o.csv.empty()) {
     csv.open(o.csv);
     if (!csv) throw std::runtime_error(o.csv + ": cannot open for writing");
     csv << "mode,factor,adaptive_px,displacement,triangles,cpu_ms_median,cpu_ms_min,cpu_ms_max,gpu_ms_median,gpu_ms_min,"
-           "gpu_ms_max,mtriangles_per_s,gpu_bytes\n";
+           "gpu_ms_max,mtriangles_per_s,share_of_ceiling,gpu_bytes\n";
   }
 
-  GrowthOptions growth;
-  growth.seed = o.seed;
-  growth.levels = o.levels;
-  const TreeMesh tree = buildTreeMesh(generateSkeleton(loadSpeciesArgument(o.species), growth));
-  const PatchSet patches = buildPatches(tree.mesh);
+  const SpeciesParams params = loadSpeciesArgument(o.species);
   vk::ContextOptions contextOptions;
   contextOptions.validation = validationWanted(o.validation);
   contextOptions.device = o.device;
   vk::VulkanContext context(contextOptions);
-  const auto textures = render::loadTreeTextures(assetDirectory());
-  render::RenderSession session(context, width, height, VK_SAMPLE_COUNT_1_BIT, textures);
-  session.setTree(tree.mesh, patches);
-  const render::Camera camera = render::frameBounds(render::plantedBounds(*session.tree()), 25.0f, 6.0f,
-                                                    static_cast<float>(width) / static_cast<float>(height));
+  render::RenderSession session(context, width, height, VK_SAMPLE_COUNT_1_BIT, render::loadTreeTextures(assetDirectory()));
+  const float aspect = static_cast<float>(width) / static_cast<float>(height);
+
+  BenchScene scene;
+  TreeMesh tree;
+  const auto uploadStart = std::chrono::steady_clock::now();
+  if (forestScene) {
+    render::ForestOptions f;
+    f.species = {o.species};
+    f.params = {params};
+    f.trees = forestTrees;
+    f.seed = o.seed;
+    scene.forest = std::make_unique<render::Forest>(context, f, [](const std::string& line) {
+      std::fprintf(stderr, "arbor bench tess: %s\n", line.c_str());
+    });
+    session.renderer().setTrees(scene.forest->gpuTrees());
+    scene.camera = scene.forest->overview(aspect);
+    // Every tree at its whole mesh, so that a factor means the same everywhere.
+    scene.instances = scene.forest->frame(scene.camera, aspect, {1e9f, 1e9f}).instances;
+    for (const render::ForestTree& t : scene.forest->trees()) scene.bytes += t.detail[0].bytes;
+    for (const render::TreeInstance& i : scene.instances) scene.quads += scene.forest->trees()[i.tree / render::kDetailLevels].detail[0].patchCount;
+    scene.description = std::to_string(scene.instances.size()) + " trees in view (" + std::to_string(scene.forest->trees().size()) +
+                        " distinct), " + std::to_string(scene.quads) + " quads in all";
+  } else {
+    GrowthOptions growth;
+    growth.seed = o.seed;
+    growth.levels = o.levels;
+    tree = buildTreeMesh(generateSkeleton(params, growth));
+    session.setTree(tree.mesh, buildPatches(tree.mesh));
+    scene.instances = {{0, render::plantedModel(*session.tree())}};
+    scene.camera = render::frameBounds(render::plantedBounds(*session.tree()), 25.0f, 6.0f, aspect);
+    scene.bytes = session.tree()->bytes;
+    scene.quads = tree.mesh.quads.size();
+    scene.description = std::to_string(scene.quads) + " quads";
+  }
+  const double uploadMs = msSince(uploadStart);
   // Lavapipe rasterises when the render pass ends, after the timestamps: its whole frame is the host's wait.
   const bool hostTimed = context.isLavapipe();
 
-  std::printf("%s (%zu quads) at %ux%u on %s, %d frames per cell after one warm-up%s\n\n", o.species.c_str(),
-              tree.mesh.quads.size(), width, height, context.deviceDescription().c_str(), o.frames,
-              contextOptions.validation ? ", validation on" : "");
-  std::printf("| cell | triangles | CPU frame ms (min-max) | GPU tree ms (min-max) | M triangles/s | GPU bytes |\n");
-  std::printf("|---|---|---|---|---|---|\n");
+  std::printf("%s: %s at %ux%u on %s, %d frames per cell after one warm-up%s\n\n", params.name.c_str(), scene.description.c_str(),
+              width, height, context.deviceDescription().c_str(), o.frames, contextOptions.validation ? ", validation on" : "");
   std::fflush(stdout);
-  for (std::size_t i = 0; i < cells.size(); ++i) {
-    const Cell& c = cells[i];
-    std::fprintf(stderr, "arbor bench tess: [%zu/%zu] %s\n", i + 1, cells.size(), c.label.c_str());
-    const TimedFrames timed = timeFrames(session, camera, c.settings, o.frames);
-    const render::FrameResult& frame = timed.last;
-    const Figures &fc = timed.cpu, &fg = timed.gpu;
-    const double seconds = (hostTimed || !timed.hasGpu ? fc.median : fg.median) * 1e-3;
-    const double rate = seconds > 0.0 ? static_cast<double>(frame.gpu.triangles) / seconds * 1e-6 : 0.0;
-    std::printf("| %s | %llu | %.2f (%.2f-%.2f) | ", c.label.c_str(), static_cast<unsigned long long>(frame.gpu.triangles),
-                fc.median, fc.lo, fc.hi);
-    if (!timed.hasGpu) std::printf("- | ");
-    else std::printf("%.3f (%.3f-%.3f)%s | ", fg.median, fg.lo, fg.hi, hostTimed ? " *" : "");
-    std::printf("%.2f | %zu |\n", rate, session.tree()->bytes);
-    std::fflush(stdout);
-    if (csv) {
-      const bool flat = c.settings.mode == render::RenderMode::Flat;
-      csv << render::renderModeName(c.settings.mode) << ',' << (flat ? 1.0f : c.settings.tessLevel) << ',' << c.settings.adaptivePixels << ','
-          << c.settings.displacement << ',' << frame.gpu.triangles << ',' << fc.median << ',' << fc.lo << ',' << fc.hi << ','
-          << fg.median << ',' << fg.lo << ',' << fg.hi << ',' << rate << ',' << session.tree()->bytes << '\n';
+
+  auto measure = [&](const std::string& label, const render::RenderSettings& s) {
+    Measured m;
+    m.label = label;
+    m.mode = s.ceiling ? "ceiling" : render::renderModeName(s.mode);
+    m.factor = s.mode == render::RenderMode::Flat ? 1.0f : s.tessLevel;
+    m.adaptive = s.adaptivePixels;
+    m.displacement = s.displacement;
+    m.timed = timeFrames(session, scene.camera, s, o.frames, &scene.instances);
+    m.triangles = m.timed.last.gpu.triangles;
+    m.seconds = (hostTimed || !m.timed.hasGpu ? m.timed.cpu.median : m.timed.gpu.median) * 1e-3;
+    m.rate = m.seconds > 0.0 ? static_cast<double>(m.triangles) / m.seconds * 1e-6 : 0.0;
+    return m;
+  };
+
+  // The ceiling first: ACC's patches with trivial stages at each uniform factor.
+  std::vector<float> uniformFactors;
+  for (const Cell& c : cells) {
+    if (c.settings.mode != render::RenderMode::Flat && c.settings.adaptivePixels <= 0.0f &&
+        std::find(uniformFactors.begin(), uniformFactors.end(), c.settings.tessLevel) == uniformFactors.end()) {
+      uniformFactors.push_back(c.settings.tessLevel);
     }
   }
+  const std::size_t total = cells.size() + (o.noCeiling ? 0 : uniformFactors.size());
+  std::size_t done = 0;
+  std::vector<Measured> ceiling, results;
+  if (!o.noCeiling) {
+    for (float f : uniformFactors) {
+      std::fprintf(stderr, "arbor bench tess: [%zu/%zu] ceiling x%g\n", ++done, total, static_cast<double>(f));
+      render::RenderSettings s;
+      s.mode = render::RenderMode::ACC;
+      s.ceiling = true;
+      s.tessLevel = f;
+      ceiling.push_back(measure("ceiling x" + CLI::detail::to_string(f), s));
+    }
+  }
+  const double bestCeiling = std::accumulate(ceiling.begin(), ceiling.end(), 0.0, [](double a, const Measured& m) { return std::max(a, m.rate); });
+  for (const Cell& c : cells) {
+    std::fprintf(stderr, "arbor bench tess: [%zu/%zu] %s\n", ++done, total, c.label.c_str());
+    results.push_back(measure(c.label, c.settings));
+  }
+
+  auto shareOfCeiling = [&](const Measured& m) {
+    if (m.mode == "ceiling") return 1.0;
+    for (const Measured& c : ceiling) {
+      if (m.adaptive <= 0.0f && m.mode != "flat" && c.factor == m.factor) return c.rate > 0.0 ? m.rate / c.rate : 0.0;
+    }
+    return bestCeiling > 0.0 ? m.rate / bestCeiling : 0.0;  // adaptive and flat cells: against the best ceiling
+  };
+  std::printf("| cell | triangles | CPU frame ms (min-max) | GPU frame ms (min-max) | M triangles/s | of ceiling | GPU MiB |\n");
+  std::printf("|---|---|---|---|---|---|---|\n");
+  std::vector<const Measured*> rows;
+  for (const Measured& m : ceiling) rows.push_back(&m);
+  for (const Measured& m : results) rows.push_back(&m);
+  for (const Measured* m : rows) {
+    std::printf("| %s | %llu | %.2f (%.2f-%.2f) | ", m->label.c_str(), static_cast<unsigned long long>(m->triangles), m->timed.cpu.median,
+                m->timed.cpu.lo, m->timed.cpu.hi);
+    if (!m->timed.hasGpu) std::printf("- | ");
+    else std::printf("%.3f (%.3f-%.3f)%s | ", m->timed.gpu.median, m->timed.gpu.lo, m->timed.gpu.hi, hostTimed ? " *" : "");
+    std::printf("%.2f | %s | %.1f |\n", m->rate, o.noCeiling ? "-" : (std::to_string(static_cast<int>(std::lround(100.0 * shareOfCeiling(*m)))) + " %").c_str(),
+                mib(scene.bytes));
+    if (csv) {
+      csv << m->mode << ',' << m->factor << ',' << m->adaptive << ',' << m->displacement << ',' << m->triangles << ',' << m->timed.cpu.median
+          << ',' << m->timed.cpu.lo << ',' << m->timed.cpu.hi << ',' << m->timed.gpu.median << ',' << m->timed.gpu.lo << ',' << m->timed.gpu.hi
+          << ',' << m->rate << ',' << (o.noCeiling ? 0.0 : shareOfCeiling(*m)) << ',' << scene.bytes << '\n';
+    }
+  }
+  std::fflush(stdout);
+
+  // The alternative: Catmull-Clark on the CPU with OpenSubdiv to the level with ACC's triangles (factor 2^k
+  // gives 2 * 4^k triangles per quad, as k uniform refinements do), uploaded and drawn flat.
+  std::vector<Measured> subdivided;
+  if (!forestScene && o.subdivideUpTo >= 1) {
+    std::printf("\n| ACC factor = 2^levels | triangles | tessellated: first frame ms, frame ms, GPU MiB | CPU-subdivided: subdivide ms, "
+                "first frame ms, frame ms, GPU MiB | GPU bytes, subdivided / tessellated |\n|---|---|---|---|---|\n");
+    for (int levels = 0; (1 << levels) <= o.subdivideUpTo; ++levels) {
+      const float factor = static_cast<float>(1 << levels);
+      const auto acc = std::find_if(results.begin(), results.end(), [&](const Measured& m) {
+        return m.mode == "acc" && m.adaptive <= 0.0f && m.displacement == 0.0f && m.factor == factor;
+      });
+      if (acc == results.end()) continue;
+      if (static_cast<double>(scene.quads) * std::pow(4.0, levels) > 2.0e7) {
+        std::printf("| %g | - | skipped: %zu quads x 4^%d is over 20 M refined quads |||\n", static_cast<double>(factor), scene.quads, levels);
+        continue;
+      }
+      std::fprintf(stderr, "arbor bench tess: CPU subdivision, %d levels\n", levels);
+      const auto start = std::chrono::steady_clock::now();
+      const QuadMesh refined = levels > 0 ? subdivide(tree.mesh, levels) : tree.mesh;
+      const double subdivideMs = msSince(start);
+      render::RenderSession& flatSession = session;  // the tessellated cells are done: the same pipelines draw it
+      flatSession.setTree(refined, PatchSet{});
+      render::RenderSettings s;
+      s.mode = render::RenderMode::Flat;
+      const render::FrameResult first = flatSession.render(scene.camera, s);
+      const double firstFrameMs = msSince(start);
+      const TimedFrames timed = timeFrames(flatSession, scene.camera, s, o.frames);
+      const double frameMs = hostTimed || !timed.hasGpu ? timed.cpu.median : timed.gpu.median;
+      const double accFrameMs = acc->seconds * 1e3;
+      const double accFirstMs = uploadMs + acc->timed.cpu.hi;  // upload of mesh and patches, then a frame
+      const std::size_t bytes = flatSession.tree()->bytes;
+      std::printf("| %g | %llu | %.0f, %.2f, %.1f | %.0f, %.0f, %.2f, %.1f | %.1f |\n", static_cast<double>(factor),
+                  static_cast<unsigned long long>(first.gpu.triangles), accFirstMs, accFrameMs, mib(scene.bytes), subdivideMs, firstFrameMs,
+                  frameMs, mib(bytes), static_cast<double>(bytes) / static_cast<double>(scene.bytes));
+      std::fflush(stdout);
+      Measured m;
+      m.label = "cpu-subdivided x" + CLI::detail::to_string(factor);
+      m.mode = "cpu-subdivided";
+      m.factor = factor;
+      m.triangles = first.gpu.triangles;
+      m.timed = timed;
+      m.seconds = frameMs * 1e-3;
+      m.rate = m.seconds > 0.0 ? static_cast<double>(m.triangles) / m.seconds * 1e-6 : 0.0;
+      if (csv) {
+        csv << "cpu-subdivided," << factor << ",0,0," << m.triangles << ',' << timed.cpu.median << ',' << timed.cpu.lo << ',' << timed.cpu.hi << ','
+            << timed.gpu.median << ',' << timed.gpu.lo << ',' << timed.gpu.hi << ',' << m.rate << ",0," << bytes << '\n';
+      }
+      subdivided.push_back(m);
+    }
+  }
+
+  if (!o.plot.empty()) {
+    std::vector<std::string> modes;
+    std::vector<const Measured*> all;
+    for (const Measured* m : rows) all.push_back(m);
+    for (const Measured& m : subdivided) all.push_back(&m);
+    for (const Measured* m : all) {
+      const std::string key = m->mode + (m->displacement != 0.0f ? "+disp" : "");
+      if (m->adaptive <= 0.0f && std::find(modes.begin(), modes.end(), key) == modes.end()) modes.push_back(key);
+    }
+    PlotPanel time{"Frame time", "tessellation factor", std::string(hostTimed ? "CPU" : "GPU") + " ms per frame", {}};
+    PlotPanel rate{"Throughput", "tessellation factor", "million triangles per second", {}};
+    for (std::size_t k = 0; k < modes.size(); ++k) {
+      PlotSeries t{modes[k], {}, {}, plotColor(k)}, r{modes[k], {}, {}, plotColor(k)};
+      for (const Measured* m : all) {
+        if (m->adaptive > 0.0f || m->mode + (m->displacement != 0.0f ? "+disp" : "") != modes[k]) continue;
+        t.x.push_back(m->factor), t.y.push_back(m->seconds * 1e3);
+        r.x.push_back(m->factor), r.y.push_back(m->rate);
+      }
+      time.series.push_back(t);
+      rate.series.push_back(r);
+    }
+    writePng(o.plot, plotPanels({time, rate}));
+  }
   if (hostTimed) {
-    std::printf("\n* lavapipe: GPU timestamps miss its deferred rasterisation; triangles/s use the CPU frame time.\n");
+    std::printf("\n* lavapipe: GPU timestamps miss its deferred rasterisation; rates and shares use the CPU frame time.\n");
   }
   if (reportValidationErrors(context)) return kExitFailure;
   if (!o.csv.empty()) std::printf("wrote %s\n", o.csv.c_str());
+  if (!o.plot.empty()) std::printf("wrote %s\n", o.plot.c_str());
   return 0;
 }
 
@@ -149,6 +341,12 @@ void addBenchTessCommand(CLI::App& bench, Action& action) {
   cmd->add_option("--device", o->device, "Prefer the Vulkan device whose name contains this");
   cmd->add_flag("--validation", o->validation, "Enable the Khronos validation layer (also ARBOR_VALIDATION=1)");
   cmd->add_option("--csv", o->csv, "Also write the figures as CSV");
+  cmd->add_option("--plot", o->plot, "Also draw frame time and triangles/s against the factor, one line per mode, as PNG");
+  cmd->add_option("--scene", o->scene, "tree (default) or forest N (N instanced trees, 1 to 1000, default 30)")->expected(1, 2);
+  cmd->add_flag("--no-ceiling", o->noCeiling, "Skip the ceiling cells (ACC's patches with trivial shaders)");
+  cmd->add_option("--subdivide-up-to", o->subdivideUpTo, "Compare with OpenSubdiv on the CPU up to this ACC factor, a power of two (0: skip)")
+      ->check(CLI::Range(0, 64))
+      ->capture_default_str();
   cmd->callback([o, &action] { action = [o] { return runBenchTess(*o); }; });
 }
 
