@@ -98,7 +98,7 @@ TEST_CASE("an unwritable output fails cleanly with 1", "[cli]") {
 }
 
 TEST_CASE("every subcommand has --help", "[cli]") {
-  for (const char* command : {"", "generate", "species", "bench", "bench generate", "bench mesh", "bench tess", "bench leaves", "render",
+  for (const char* command : {"", "generate", "species", "bench", "bench generate", "bench mesh", "bench tess", "bench leaves", "render", "view",
                               "textures", "accuracy"}) {
     const Result r = run(std::string(command) + " --help");
     INFO(command);

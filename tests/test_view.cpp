@@ -135,6 +135,12 @@ TEST_CASE("the viewer refuses bad scripts with 2, naming the file, line or optio
   const Result missing = run(kNoDisplay, "palm --camera-path " + test::tempPath("no-such-path.txt") + " --out " + freshDir("view-bad"));
   CHECK(missing.exitCode == 2);
   CHECK_THAT(missing.output, Catch::Contains("no-such-path.txt"));
+  const Result species = run(kNoDisplay, "palm no-such-tree --out " + freshDir("view-bad"));
+  CHECK(species.exitCode == 2);
+  CHECK_THAT(species.output, Catch::Contains("no-such-tree"));
+  const Result detail = run(kNoDisplay, "palm --detail 50,10 --out " + freshDir("view-bad"));
+  CHECK(detail.exitCode == 2);
+  CHECK_THAT(detail.output, Catch::Contains("--detail"));
   const Result events = run(kNoDisplay, "palm --events 3:explode --out " + freshDir("view-bad"));
   CHECK(events.exitCode == 2);
   CHECK_THAT(events.output, Catch::Contains("--events"));
