@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <sys/wait.h>
 
 #include "image/image_compare.hpp"
@@ -20,9 +21,7 @@ struct Result {
   std::string output;
 };
 
-// `prefix` runs the viewer under Xvfb or without a display.
-Result run(const std::string& prefix, const std::string& arguments) {
-  const std::string command = prefix + " " + ARBOR_BINARY + " view --validation " + arguments + " 2>&1";
+Result runCommand(const std::string& command) {
   Result r;
   FILE* pipe = popen(command.c_str(), "r");
   REQUIRE(pipe);
@@ -32,6 +31,11 @@ Result run(const std::string& prefix, const std::string& arguments) {
   const int status = pclose(pipe);
   r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return r;
+}
+
+// `prefix` runs the viewer under Xvfb or without a display.
+Result run(const std::string& prefix, const std::string& arguments) {
+  return runCommand(prefix + " " + ARBOR_BINARY + " view --validation " + arguments + " 2>&1");
 }
 
 const std::string kXvfb = "xvfb-run -a -s '-screen 0 800x600x24'";
@@ -111,6 +115,30 @@ TEST_CASE("the viewer survives resize, minimise, fullscreen and regeneration, ov
   const std::size_t corner = 4 * (100 * static_cast<std::size_t>(last.width) + 100);
   CHECK(last.rgba[corner] + last.rgba[corner + 1] + last.rgba[corner + 2] < 250);
   CHECK_THAT(r.output, Catch::Contains("growing palm #1 (1/1)"));
+}
+
+TEST_CASE("the viewer answers keys: F12 takes a screenshot, W moves the camera, Esc leaves", "[view]") {
+  const std::string dir = freshDir("view-keys"), log = test::tempPath("view-keys.log"), script = test::tempPath("view-keys.sh");
+  // xdotool types into the window under Xvfb once the viewer says it runs; `wait` passes on its exit status.
+  std::ofstream(script) << ARBOR_BINARY << " view --validation palm --size 240x180 --out " << dir << " > " << log << " 2>&1 &\n"
+                        << "pid=$!\n"
+                        << "for i in $(seq 1 600); do grep -q 'interactive on' " << log << " && break; sleep 0.1; done\n"
+                        << "win=$(xdotool search --sync --name '^Arbor$' | head -1)\n"
+                        << "xdotool windowfocus --sync \"$win\"\n"
+                        << "sleep 0.5; xdotool key F12; sleep 0.5\n"
+                        << "xdotool keydown w; sleep 1.5; xdotool keyup w\n"
+                        << "sleep 0.5; xdotool key F12; sleep 0.5; xdotool key Escape\n"
+                        << "wait $pid\n";
+  const Result r = runCommand(kXvfb + " sh " + script + " 2>&1");
+  std::ifstream in(log);
+  const std::string output((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  INFO(r.output << output);
+  REQUIRE(r.exitCode == 0);  // Esc left the viewer, without a validation error
+  REQUIRE(fs::exists(fs::path(dir) / "frame-0001.png"));
+  REQUIRE(fs::exists(fs::path(dir) / "frame-0002.png"));
+  const ImageDifference moved = compareImages(readPng((fs::path(dir) / "frame-0001.png").string()),
+                                              readPng((fs::path(dir) / "frame-0002.png").string()), 16);
+  CHECK(moved.pixelsOverThreshold > 1000);  // W brought the orbit camera closer
 }
 
 TEST_CASE("without a display the viewer renders a forest offscreen and says where", "[view]") {

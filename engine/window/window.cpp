@@ -1,5 +1,6 @@
 #include "window.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 #define GLFW_INCLUDE_VULKAN
@@ -31,13 +32,19 @@ std::vector<const char*> requiredInstanceExtensions() {
   return std::vector<const char*>(names, names + count);
 }
 
-Window::Window(const std::string& title, int width, int height) : wasDown_(GLFW_KEY_LAST + 1, false) {
+Window::Window(const std::string& title, int width, int height) {
   if (!displayAvailable()) throw std::runtime_error("no display: cannot open a window (set DISPLAY, or render offscreen)");
   glfwWindowHint(GLFW_CLIENT_API, GLFW_NO_API);
   glfwWindowHint(GLFW_RESIZABLE, GLFW_TRUE);
   window_ = glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);
   if (!window_) throw std::runtime_error("glfwCreateWindow failed");
   glfwSetScrollCallback(window_, [](GLFWwindow*, double, double y) { gScroll += y; });
+  // Key presses arrive as events, so a tap shorter than a frame is not lost between two looks at the keys.
+  // (Installed before the overlay's, which calls it on.)
+  glfwSetWindowUserPointer(window_, this);
+  glfwSetKeyCallback(window_, [](GLFWwindow* w, int key, int, int action, int) {
+    if (action == GLFW_PRESS) static_cast<Window*>(glfwGetWindowUserPointer(w))->pressed_.push_back(key);
+  });
 }
 
 Window::~Window() {
@@ -52,7 +59,10 @@ VkSurfaceKHR Window::createSurface(VkInstance instance) const {
 
 bool Window::shouldClose() const { return glfwWindowShouldClose(window_) == GLFW_TRUE; }
 
-void Window::pollEvents() { glfwPollEvents(); }
+void Window::pollEvents() {
+  pressed_.clear();
+  glfwPollEvents();
+}
 
 VkExtent2D Window::framebufferSize() const {
   int w = 0, h = 0;
@@ -83,12 +93,7 @@ void Window::restore() { glfwRestoreWindow(window_); }
 
 bool Window::keyHeld(int key) const { return glfwGetKey(window_, key) == GLFW_PRESS; }
 
-bool Window::keyPressed(int key) {
-  const bool down = keyHeld(key);
-  const bool pressed = down && !wasDown_[static_cast<std::size_t>(key)];
-  wasDown_[static_cast<std::size_t>(key)] = down;
-  return pressed;
-}
+bool Window::keyPressed(int key) { return std::find(pressed_.begin(), pressed_.end(), key) != pressed_.end(); }
 
 bool Window::mouseLookHeld() const { return glfwGetMouseButton(window_, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS; }
 

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+
 #include <vulkan/vulkan.h>
 
 struct GLFWwindow;
@@ -37,7 +38,7 @@ class Window {
   void restore();
 
   bool keyHeld(int key) const;
-  bool keyPressed(int key);      // went down since the last call for this key
+  bool keyPressed(int key);      // went down during the last pollEvents (a tap between two frames counts)
   bool mouseLookHeld() const;    // right button
   // Mouse motion in pixels since the last call.
   void takeMouseDelta(double& dx, double& dy);
@@ -48,7 +49,7 @@ class Window {
   int windowedX_ = 0, windowedY_ = 0, windowedWidth_ = 0, windowedHeight_ = 0;
   double lastX_ = 0.0, lastY_ = 0.0;
   bool mouseKnown_ = false;
-  std::vector<bool> wasDown_;
+  std::vector<int> pressed_;  // keys that went down during the last pollEvents
 };
 
 }  // namespace arbor::window
