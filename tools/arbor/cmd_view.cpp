@@ -188,6 +188,13 @@ render::DetailDistances parseDetail(const std::string& text, bool lavapipe) {
   return {v[0], v[1]};
 }
 
+// What the options leave open, chosen for the device: lavapipe gets fewer meshed levels and a lower largest
+// adaptive factor (it splits tessellated draws by the largest: 15 patches a draw at 64, 226 at 16).
+void applyDeviceDefaults(const ViewOptions& o, const vk::VulkanContext& context, ViewState& state) {
+  state.detail = parseDetail(o.detail, context.isLavapipe());
+  if (o.maxTess <= 0.0f && context.isLavapipe()) state.settings.maxLevel = 16.0f;
+}
+
 // The ground fades into the horizon beyond the forest as seen from the eye.
 float groundRadius(const render::Forest& forest, const render::Camera& camera) {
   return std::max(100.0f, 2.0f * (forest.radius() + glm::length(glm::vec2(camera.eye))));
@@ -215,7 +222,7 @@ int runOffscreen(const ViewOptions& o, ViewState& state, const std::vector<Speci
   contextOptions.validation = validationWanted(o.validation);
   contextOptions.device = o.device;
   vk::VulkanContext context(contextOptions);
-  state.detail = parseDetail(o.detail, context.isLavapipe());
+  applyDeviceDefaults(o, context, state);
   render::RenderSession session(context, width, height, VK_SAMPLE_COUNT_1_BIT, render::loadTreeTextures(assetDirectory()));
   const render::Forest forest(context, forestOptions(o, params), progressLine);
   session.renderer().setTrees(forest.gpuTrees());
@@ -255,7 +262,7 @@ int runWindow(const ViewOptions& o, ViewState& state, std::vector<SpeciesParams>
   contextOptions.instanceExtensions = window::requiredInstanceExtensions();
   contextOptions.deviceExtensions = {VK_KHR_SWAPCHAIN_EXTENSION_NAME};
   vk::VulkanContext context(contextOptions);
-  state.detail = parseDetail(o.detail, context.isLavapipe());
+  applyDeviceDefaults(o, context, state);
   const VkSurfaceKHR surface = win.createSurface(context.instance());
   int status = 0;
   {
@@ -276,6 +283,7 @@ int runWindow(const ViewOptions& o, ViewState& state, std::vector<SpeciesParams>
     int screenshotCount = 0;
     std::printf("arbor view: %s on %s, %s; %zu distinct trees, %zu placed\n", scripted ? "scripted" : "interactive",
                 context.deviceDescription().c_str(), o.noVsync ? "vsync off" : "vsync on", forest->trees().size(), forest->placements().size());
+    std::fflush(stdout);  // scripts wait for this line
     const std::vector<WindowEvent> events = parseEvents(o.events);
     std::vector<double> frameMs;
     for (int f = 0; !win.shouldClose() && (!scripted || f < frames); ++f) {
