@@ -70,3 +70,29 @@ TEST_CASE("a forest instances its distinct trees, culls whole trees and fakes mo
   }
   CHECK(half.culled >= behind);
 }
+
+TEST_CASE("golden image: a small mixed forest from the viewer's overview, each tree at its detail", "[forest][render][golden]") {
+  render::ForestOptions options;
+  options.species = {"palm", "quaking-aspen"};
+  options.params = {test::loadPreset("palm"), test::loadPreset("quaking-aspen")};
+  for (SpeciesParams& p : options.params) p.levels = std::min(p.levels, 2);  // light enough for the suite
+  options.trees = 8;
+  options.seeds = 1;
+  render::RenderSession session(test::vulkan(), 200, 120, VK_SAMPLE_COUNT_1_BIT, test::textures());
+  const render::Forest forest(test::vulkan(), options, [](const std::string&) {});
+  session.renderer().setTrees(forest.gpuTrees());
+  const render::Camera camera = forest.overview(200.0f / 120.0f);
+  // The nearest trees whole, the middle ones with a level faked, the farthest with two.
+  const render::ForestFrame frame = forest.frame(camera, 200.0f / 120.0f, {45.0f, 55.0f});
+  CHECK(frame.visible == 8);
+  render::RenderSettings settings;
+  settings.mode = render::RenderMode::ACC;
+  settings.tessLevel = 3.0f;
+  settings.leaves = true;
+  settings.impostors = true;
+  settings.groundRadius = 200.0f;
+  session.render(camera, settings, frame.instances);
+  const test::GoldenCheck golden = test::checkGolden("forest-overview", session.image());
+  INFO(golden.report);
+  CHECK(golden.ok);
+}

@@ -146,8 +146,13 @@ Camera Forest::overview(float aspect) const {
     const ForestTree& t = trees_.front();
     return frameBounds(t.bounds, 25.0f, 6.0f, aspect);
   }
-  const float r = radius_ + trees_.front().crownRadius;
-  return frameBounds(Bounds{glm::vec3(-r, -r, 0.0f), glm::vec3(r, r, top)}, 25.0f, 20.0f, aspect);
+  Bounds all{glm::vec3(1e30f), glm::vec3(-1e30f)};  // the crowns as placed
+  for (const ForestPlacement& p : placements_) {
+    const float r = trees_[p.tree].crownRadius;
+    all.lo = glm::min(all.lo, glm::vec3(p.position - glm::vec2(r), 0.0f));
+    all.hi = glm::max(all.hi, glm::vec3(p.position + glm::vec2(r), top));
+  }
+  return frameBounds(all, 25.0f, 20.0f, aspect);
 }
 
 std::vector<Camera> Forest::tour(float aspect) const {
