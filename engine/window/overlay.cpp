@@ -64,6 +64,8 @@ void Overlay::render(VkCommandBuffer cmd) {
   ImGui_ImplVulkan_RenderDrawData(ImGui::GetDrawData(), cmd);
 }
 
+void Overlay::discardFrame() { ImGui::EndFrame(); }
+
 bool Overlay::wantsMouse() const { return ImGui::GetIO().WantCaptureMouse; }
 bool Overlay::wantsKeyboard() const { return ImGui::GetIO().WantCaptureKeyboard; }
 

@@ -17,6 +17,7 @@ class Overlay {
 
   void newFrame();                   // then ImGui:: calls
   void render(VkCommandBuffer cmd);  // inside the render pass
+  void discardFrame();               // instead of render, when the frame is not drawn
   bool wantsMouse() const;
   bool wantsKeyboard() const;
 

@@ -1,0 +1,69 @@
+#include "view_panel.hpp"
+
+#include <algorithm>
+#include <cfloat>
+
+#include <imgui.h>
+
+#include "species/species_fields.hpp"
+
+namespace arbor::cli {
+
+void drawPanel(ViewState& state, const render::ForestFrame& frame, const render::FrameStats& stats, std::vector<SpeciesParams>& params,
+               const std::vector<std::string>& names, const std::string& device) {
+  ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(430, 540), ImGuiCond_FirstUseEver);
+  ImGui::Begin("Arbor");
+  ImGui::Text("%s", device.c_str());
+  const float last = state.frameTimes[(state.frameIndex + state.frameTimes.size() - 1) % state.frameTimes.size()];
+  ImGui::Text("frame %.2f ms (%.0f fps)", static_cast<double>(last), last > 0.0f ? 1000.0 / static_cast<double>(last) : 0.0);
+  ImGui::PlotLines("ms", state.frameTimes.data(), static_cast<int>(state.frameTimes.size()), static_cast<int>(state.frameIndex), nullptr,
+                   0.0f, FLT_MAX, ImVec2(0, 60));
+  ImGui::Text("triangles %llu, %u trees drawn, %u culled", static_cast<unsigned long long>(stats.triangles), frame.visible, frame.culled);
+  ImGui::Text("detail: %u full, %u one level faked, %u two", frame.perDetail[0], frame.perDetail[1], frame.perDetail[2]);
+  render::RenderSettings& s = state.settings;
+  int mode = static_cast<int>(s.mode);
+  ImGui::Combo("mode", &mode, "flat\0pn\0acc\0");
+  s.mode = static_cast<render::RenderMode>(mode);
+  bool adaptive = s.adaptivePixels > 0.0f;
+  ImGui::Checkbox("adaptive", &adaptive);
+  if (adaptive) {
+    if (s.adaptivePixels <= 0.0f) s.adaptivePixels = 8.0f;
+    ImGui::SliderFloat("edge pixels", &s.adaptivePixels, 1.0f, 64.0f);
+  } else {
+    s.adaptivePixels = 0.0f;
+    ImGui::SliderFloat("factor", &s.tessLevel, 1.0f, 64.0f);
+  }
+  ImGui::SliderFloat("displacement", &s.displacement, 0.0f, 1.0f);
+  ImGui::Checkbox("wireframe", &s.wireframe);
+  ImGui::Checkbox("leaves", &s.leaves);
+  ImGui::SliderFloat("leaf distance", &s.leafLodDistance, 0.0f, 200.0f);
+  int shadow = static_cast<int>(s.shadowLeaves);
+  ImGui::SliderInt("shadow leaves", &shadow, 0, 500);
+  s.shadowLeaves = static_cast<std::uint32_t>(shadow);
+  ImGui::SliderFloat("full mesh within (m)", &state.detail.full, 0.0f, 300.0f);
+  ImGui::SliderFloat("one level faked within (m)", &state.detail.reduced, 0.0f, 600.0f);
+  ImGui::SliderFloat("sun azimuth", &state.lightAzimuth, -180.0f, 180.0f);
+  ImGui::SliderFloat("sun elevation", &state.lightElevation, -10.0f, 90.0f);
+  s.lightDirection = render::sunDirection(state.lightAzimuth, state.lightElevation);
+  for (std::size_t k = 0; k < params.size(); ++k) {
+    if (!ImGui::CollapsingHeader(names[k].c_str())) continue;
+    ImGui::PushID(static_cast<int>(k));
+    for (const TreeField& f : treeFields()) {
+      if (f.real) {
+        auto v = static_cast<float>(params[k].*f.real);
+        if (ImGui::SliderFloat(f.key, &v, static_cast<float>(f.min), static_cast<float>(std::min(f.max, 1e4)))) params[k].*f.real = v;
+      } else if (f.integer && f.type == FieldType::Integer) {
+        int v = params[k].*f.integer;
+        if (ImGui::SliderInt(f.key, &v, static_cast<int>(f.min), static_cast<int>(std::min(f.max, 1e4)))) params[k].*f.integer = v;
+      }
+    }
+    if (ImGui::Button("regenerate")) state.regenerate = true;
+    ImGui::PopID();
+  }
+  ImGui::Text("WASD move, right mouse look, Shift fast, Q/E down/up");
+  ImGui::Text("Tab orbit/walk, F11 fullscreen, F12 screenshot, F1 panel");
+  ImGui::End();
+}
+
+}  // namespace arbor::cli

@@ -1,0 +1,28 @@
+#pragma once
+// The viewer's Dear ImGui panel and the state it edits while the viewer runs.
+#include <string>
+#include <vector>
+
+#include "render/forest.hpp"
+#include "render/renderer.hpp"
+#include "species/species.hpp"
+
+namespace arbor::cli {
+
+// What the panel changes while the viewer runs.
+struct ViewState {
+  render::RenderSettings settings;
+  render::DetailDistances detail;
+  float lightAzimuth = 25.0f, lightElevation = 40.0f;
+  bool showOverlay = true;
+  bool regenerate = false;
+  std::vector<float> frameTimes = std::vector<float>(120, 0.0f);
+  std::size_t frameIndex = 0;
+};
+
+// Figures (device, frame-time graph, triangles, trees per detail), render settings, and every numeric
+// parameter of each species with a regenerate button. Between the overlay's newFrame and render.
+void drawPanel(ViewState& state, const render::ForestFrame& frame, const render::FrameStats& stats, std::vector<SpeciesParams>& params,
+               const std::vector<std::string>& names, const std::string& device);
+
+}  // namespace arbor::cli
