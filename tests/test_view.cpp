@@ -38,8 +38,9 @@ Result run(const std::string& prefix, const std::string& arguments) {
   return runCommand(prefix + " " + ARBOR_BINARY + " view --validation " + arguments + " 2>&1");
 }
 
-const std::string kXvfb = "xvfb-run -a -s '-screen 0 800x600x24'";
-const std::string kNoDisplay = "env -u DISPLAY -u WAYLAND_DISPLAY";
+// A stuck window (no display answering, a script waiting for it) ends in a failure, not a hung suite.
+const std::string kXvfb = "timeout 180 xvfb-run -a -s '-screen 0 800x600x24'";
+const std::string kNoDisplay = "timeout 180 env -u DISPLAY -u WAYLAND_DISPLAY";
 
 // Walks past the palm: it stands in the middle of every frame.
 std::string palmPath() {
@@ -123,12 +124,16 @@ TEST_CASE("the viewer answers keys: F12 takes a screenshot, W moves the camera, 
   std::ofstream(script) << ARBOR_BINARY << " view --validation palm --size 240x180 --out " << dir << " > " << log << " 2>&1 &\n"
                         << "pid=$!\n"
                         << "for i in $(seq 1 600); do grep -q 'interactive on' " << log << " && break; sleep 0.1; done\n"
-                        << "win=$(xdotool search --sync --name '^Arbor$' | head -1)\n"
+                        << "win=$(timeout 60 xdotool search --sync --name '^Arbor$' | head -1)\n"
                         << "xdotool windowfocus --sync \"$win\"\n"
                         << "sleep 0.5; xdotool key F12; sleep 0.5\n"
                         << "xdotool keydown w; sleep 1.5; xdotool keyup w\n"
                         << "sleep 0.5; xdotool key F12; sleep 0.5; xdotool key Escape\n"
-                        << "wait $pid\n";
+                        << "(sleep 60; kill $pid) > /dev/null 2>&1 &\n"  // Esc not heard: end it, and fail
+                        << "watchdog=$!\n"
+                        << "wait $pid; status=$?\n"
+                        << "kill $watchdog 2>/dev/null\n"
+                        << "exit $status\n";
   const Result r = runCommand(kXvfb + " sh " + script + " 2>&1");
   std::ifstream in(log);
   const std::string output((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
