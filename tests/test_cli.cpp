@@ -7,7 +7,6 @@
 #include <map>
 #include <sstream>
 #include <nlohmann/json.hpp>
-#include <sys/wait.h>
 
 #include "common/atomic_file.hpp"
 #include "test_support.hpp"
@@ -16,23 +15,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-struct Result {
-  int exitCode = -1;
-  std::string output;  // stdout and stderr together
-};
+using Result = arbor::test::CommandResult;
 
-Result run(const std::string& arguments) {
-  const std::string command = std::string(ARBOR_BINARY) + " " + arguments + " 2>&1";
-  Result r;
-  FILE* pipe = popen(command.c_str(), "r");
-  REQUIRE(pipe);
-  char buffer[4096];
-  std::size_t n = 0;
-  while ((n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) r.output.append(buffer, n);
-  const int status = pclose(pipe);
-  r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
+Result run(const std::string& arguments) { return arbor::test::runCommand(std::string(ARBOR_BINARY) + " " + arguments + " 2>&1"); }
 
 std::string writeTemp(const std::string& name, const std::string& content) {
   const std::string path = arbor::test::tempPath(name);
@@ -136,17 +121,7 @@ TEST_CASE("a generated tree as glTF and GLB passes the Khronos validator", "[cli
   for (const char* extension : {".gltf", ".glb"}) {
     const std::string out = arbor::test::tempPath(std::string("aspen") + extension);
     REQUIRE(run("generate quaking-aspen --levels 2 --quiet --out " + out).exitCode == 0);
-    const Result v = [&] {
-      Result r;
-      const std::string command = "node " + std::string(ARBOR_SOURCE_DIR) + "/tools/validate-gltf.mjs " + out + " 2>&1";
-      FILE* pipe = popen(command.c_str(), "r");
-      char buffer[4096];
-      std::size_t n = 0;
-      while ((n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) r.output.append(buffer, n);
-      const int status = pclose(pipe);
-      r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-      return r;
-    }();
+    const Result v = arbor::test::runCommand("node " + std::string(ARBOR_SOURCE_DIR) + "/tools/validate-gltf.mjs " + out + " 2>&1");
     INFO(v.output);
     CHECK(v.exitCode == 0);
     CHECK_THAT(v.output, Catch::Contains("0 errors"));
@@ -302,22 +277,18 @@ TEST_CASE("bench tess on a forest of instanced trees", "[cli][render]") {
 }
 
 TEST_CASE("textures and bench tess refuse values out of range with 2", "[cli]") {
-  const Result size = run("textures --size 100 --out " + arbor::test::tempPath("textures-bad"));
-  CHECK(size.exitCode == 2);
-  CHECK_THAT(size.output, Catch::Contains("--size"));
-  const Result factors = run("bench tess palm --factors 1,99");
-  CHECK(factors.exitCode == 2);
-  CHECK_THAT(factors.output, Catch::Contains("--factors"));
-  const Result modes = run("bench tess palm --modes acc,magic");
-  CHECK(modes.exitCode == 2);
-  CHECK_THAT(modes.output, Catch::Contains("--modes"));
-  const Result scene = run("bench tess palm --scene meadow");
-  CHECK(scene.exitCode == 2);
-  CHECK_THAT(scene.output, Catch::Contains("--scene"));
-  const Result counts = run("bench leaves palm --counts 10,many");
-  CHECK(counts.exitCode == 2);
-  CHECK_THAT(counts.output, Catch::Contains("--counts"));
-  const Result tooMany = run("bench leaves palm --counts 90000000");
-  CHECK(tooMany.exitCode == 2);
-  CHECK_THAT(tooMany.output, Catch::Contains("--counts"));
+  const std::pair<std::string, const char*> cases[] = {
+      {"textures --size 100 --out " + arbor::test::tempPath("textures-bad"), "--size"},
+      {"bench tess palm --factors 1,99", "--factors"},
+      {"bench tess palm --modes acc,magic", "--modes"},
+      {"bench tess palm --scene meadow", "--scene"},
+      {"bench leaves palm --counts 10,many", "--counts"},
+      {"bench leaves palm --counts 90000000", "--counts"},
+  };
+  for (const auto& [arguments, field] : cases) {
+    const Result r = run(arguments);
+    INFO(arguments << "\n" << r.output);
+    CHECK(r.exitCode == 2);
+    CHECK_THAT(r.output, Catch::Contains(field));
+  }
 }

@@ -9,7 +9,6 @@
 #include <map>
 #include <numbers>
 #include <nlohmann/json.hpp>
-#include <sys/wait.h>
 
 #include <glm/geometric.hpp>
 
@@ -113,22 +112,10 @@ int normalsAgainstFaces(const QuadMesh& m) {
   return wrong;
 }
 
-struct Run {
-  int exitCode = -1;
-  std::string output;
-};
+using Run = test::CommandResult;
 
 Run validate(const std::string& file) {
-  const std::string command = "node '" + std::string(ARBOR_SOURCE_DIR) + "/tools/validate-gltf.mjs' '" + file + "' 2>&1";
-  Run r;
-  FILE* pipe = popen(command.c_str(), "r");
-  REQUIRE(pipe);
-  char buffer[4096];
-  std::size_t n = 0;
-  while ((n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) r.output.append(buffer, n);
-  const int status = pclose(pipe);
-  r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
+  return test::runCommand("node '" + std::string(ARBOR_SOURCE_DIR) + "/tools/validate-gltf.mjs' '" + file + "' 2>&1");
 }
 
 std::uint32_t word(const std::string& bytes, std::size_t at) {

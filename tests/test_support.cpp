@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
+#include <stdexcept>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include "species/species_io.hpp"
@@ -70,6 +73,18 @@ std::string tempPath(const std::string& name) {
   const fs::path dir = fs::temp_directory_path() / ("arbor-tests-" + std::to_string(::getpid()));
   fs::create_directories(dir);
   return (dir / name).string();
+}
+
+CommandResult runCommand(const std::string& command) {
+  FILE* pipe = popen(command.c_str(), "r");
+  if (!pipe) throw std::runtime_error("popen failed: " + command);
+  CommandResult r;
+  char buffer[4096];
+  std::size_t n = 0;
+  while ((n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) r.output.append(buffer, n);
+  const int status = pclose(pipe);
+  r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
 }
 
 }  // namespace arbor::test

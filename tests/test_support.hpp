@@ -18,4 +18,11 @@ double angleBetween(const Vec3& a, const Vec3& b);  // radians
 
 std::string tempPath(const std::string& name);  // in a per-run scratch directory
 
+// A shell command's exit status and what it printed (add 2>&1 to the command for stderr too).
+struct CommandResult {
+  int exitCode = -1;  // -1: it did not exit normally (killed by a signal)
+  std::string output;
+};
+CommandResult runCommand(const std::string& command);
+
 }  // namespace arbor::test

@@ -5,7 +5,6 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
-#include <sys/wait.h>
 
 #include "image/image_compare.hpp"
 #include "image/png_io.hpp"
@@ -16,22 +15,8 @@ using namespace arbor;
 
 namespace {
 
-struct Result {
-  int exitCode = -1;
-  std::string output;
-};
-
-Result runCommand(const std::string& command) {
-  Result r;
-  FILE* pipe = popen(command.c_str(), "r");
-  REQUIRE(pipe);
-  char buffer[4096];
-  std::size_t n = 0;
-  while ((n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) r.output.append(buffer, n);
-  const int status = pclose(pipe);
-  r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
+using test::runCommand;
+using Result = test::CommandResult;
 
 // `prefix` runs the viewer under Xvfb or without a display.
 Result run(const std::string& prefix, const std::string& arguments) {
