@@ -50,21 +50,14 @@ Skeleton grownFor(const std::string& preset, int meshLevels, int impostorLevels)
   return generateSkeleton(params, growth);
 }
 
-MeshOptions meshLevelsOf(const Skeleton& skeleton, int impostorLevels) {
-  MeshOptions options;
-  options.levels = impostorLevels > 0 ? skeleton.levels - impostorLevels : 0;
-  return options;
-}
-
 }  // namespace
 
 TreeScene::TreeScene(const std::string& preset, int meshLevels, int impostorLevels, std::uint32_t width, std::uint32_t height)
     : skeleton(grownFor(preset, meshLevels, impostorLevels)),
-      tree(buildTreeMesh(skeleton, meshLevelsOf(skeleton, impostorLevels))),
-      patches(buildPatches(tree.mesh)),
-      impostors(impostorLevels > 0 ? impostorSegments(skeleton, skeleton.levels - impostorLevels) : std::vector<ImpostorSegment>{}),
+      faked(meshWithFakeBranches(skeleton, skeleton.levels - impostorLevels)),
+      patches(buildPatches(faked.tree.mesh)),
       session(vulkan(), width, height, VK_SAMPLE_COUNT_1_BIT, textures()) {
-  session.setTree(tree.mesh, patches, skeleton.leaves, impostors);
+  session.setTree(faked.tree.mesh, patches, skeleton.leaves, faked.impostors);
 }
 
 render::Camera TreeScene::framed() const {

@@ -18,9 +18,8 @@ const render::TreeTextures& textures();
 // A preset grown, meshed and uploaded with its leaves and fake branches into its own offscreen session.
 struct TreeScene {
   Skeleton skeleton;
-  TreeMesh tree;
+  FakedTree faked;  // the mesh of the meshed levels, the others as fake-branch segments
   PatchSet patches;
-  std::vector<ImpostorSegment> impostors;
   render::RenderSession session;
 
   // meshLevels 0: the species' Levels; impostorLevels more are grown and drawn as fake branches.

@@ -49,18 +49,18 @@ double count(const std::vector<bool>& mask) { return static_cast<double>(std::co
 TEST_CASE("every fake-branch segment becomes one rectangle", "[render][impostors]") {
   REQUIRE(test::vulkan().features().geometryShader);
   test::TreeScene scene("quaking-aspen", 2, 1, 64, 80);
-  REQUIRE(scene.impostors.size() > 1000);
+  REQUIRE(scene.faked.impostors.size() > 1000);
   render::RenderSettings settings;
   settings.mode = render::RenderMode::Flat;
   const std::uint64_t bare = scene.session.render(scene.framed(), settings).gpu.triangles;
   settings.impostors = true;
-  CHECK(scene.session.render(scene.framed(), settings).gpu.triangles == bare + 2 * scene.impostors.size());
+  CHECK(scene.session.render(scene.framed(), settings).gpu.triangles == bare + 2 * scene.faked.impostors.size());
   // Seen from straight above many segments point at the eye; each still yields its rectangle.
   render::Camera above = scene.framed();
   above.eye = above.target + glm::vec3(0.0f, 0.001f, glm::length(above.eye - above.target));
   const std::uint64_t bareAbove = (settings.impostors = false, scene.session.render(above, settings).gpu.triangles);
   settings.impostors = true;
-  CHECK(scene.session.render(above, settings).gpu.triangles == bareAbove + 2 * scene.impostors.size());
+  CHECK(scene.session.render(above, settings).gpu.triangles == bareAbove + 2 * scene.faked.impostors.size());
 }
 
 TEST_CASE("fake branches cover what the mesh of their levels would", "[render][impostors]") {

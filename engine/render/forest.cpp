@@ -8,6 +8,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "growth/weber_penn.hpp"
+#include "mesh/impostor_segments.hpp"
 #include "mesh/tree_mesh.hpp"
 
 namespace arbor::render {
@@ -81,10 +82,7 @@ Forest::Forest(const vk::VulkanContext& context, const ForestOptions& options, c
     float reach = 0.0f;
     for (std::uint32_t d = 0; d < kDetailLevels; ++d) {
       // The deepest d levels as fake branches over a mesh of the others (one skeleton: the same tree).
-      MeshOptions meshOptions;
-      meshOptions.levels = std::max(1, skeleton.levels - static_cast<int>(d));
-      const TreeMesh mesh = buildTreeMesh(skeleton, meshOptions);
-      const auto impostors = meshOptions.levels < skeleton.levels ? impostorSegments(skeleton, meshOptions.levels) : std::vector<ImpostorSegment>{};
+      const auto [mesh, impostors] = meshWithFakeBranches(skeleton, std::max(1, skeleton.levels - static_cast<int>(d)));
       tree.detail[d] = uploadTree(context, mesh.mesh, buildPatches(mesh.mesh), skeleton.leaves, impostors);
       if (d == 0) {
         for (const glm::vec3& p : mesh.mesh.positions) reach = std::max(reach, glm::length(glm::vec2(p)));

@@ -24,4 +24,11 @@ std::vector<ImpostorSegment> impostorSegments(const Skeleton& skeleton, int from
   return segments;
 }
 
+FakedTree meshWithFakeBranches(const Skeleton& skeleton, int meshLevels) {
+  const bool faked = meshLevels < skeleton.levels;
+  MeshOptions options;
+  options.levels = faked ? meshLevels : 0;
+  return {buildTreeMesh(skeleton, options), faked ? impostorSegments(skeleton, meshLevels) : std::vector<ImpostorSegment>{}};
+}
+
 }  // namespace arbor

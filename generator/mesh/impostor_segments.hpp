@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "growth/skeleton.hpp"
+#include "tree_mesh.hpp"
 
 namespace arbor {
 
@@ -16,5 +17,13 @@ struct ImpostorSegment {
 
 // Segments of every stem of `fromLevel` and deeper, in node order (parents before children).
 std::vector<ImpostorSegment> impostorSegments(const Skeleton& skeleton, int fromLevel);
+
+// A tree whose deepest levels are fake branches: the mesh of the stems below `meshLevels` and the segments of
+// the others (every level meshed and no segments when meshLevels reaches the skeleton's levels).
+struct FakedTree {
+  TreeMesh tree;
+  std::vector<ImpostorSegment> impostors;
+};
+FakedTree meshWithFakeBranches(const Skeleton& skeleton, int meshLevels);
 
 }  // namespace arbor

@@ -81,10 +81,7 @@ int runRender(const RenderOptions& o) {
   growth.seed = o.seed;
   growth.levels = meshLevels + impostorLevels;
   const Skeleton skeleton = generateSkeleton(params, growth);
-  MeshOptions meshOptions;
-  meshOptions.levels = impostorLevels > 0 ? meshLevels : 0;
-  const TreeMesh tree = buildTreeMesh(skeleton, meshOptions);
-  const std::vector<ImpostorSegment> impostors = impostorLevels > 0 ? impostorSegments(skeleton, meshLevels) : std::vector<ImpostorSegment>{};
+  const auto [tree, impostors] = meshWithFakeBranches(skeleton, meshLevels);
   const PatchSet patches = buildPatches(tree.mesh);
 
   vk::ContextOptions contextOptions;
