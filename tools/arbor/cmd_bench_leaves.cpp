@@ -71,10 +71,7 @@ int runBenchLeaves(const BenchLeavesOptions& o) {
   const TreeMesh tree = buildTreeMesh(skeleton, meshOptions);
   const PatchSet patches = buildPatches(tree.mesh);
 
-  vk::ContextOptions contextOptions;
-  contextOptions.validation = validationWanted(o.validation);
-  contextOptions.device = o.device;
-  vk::VulkanContext context(contextOptions);
+  vk::VulkanContext context(vulkanOptions(o.validation, o.device));
   render::RenderSession session(context, width, height, VK_SAMPLE_COUNT_1_BIT, render::loadTreeTextures(assetDirectory()));
   session.setTree(tree.mesh, patches, skeleton.leaves);
   if (!session.renderer().drawsLeaves()) throw std::runtime_error("bench leaves: this Vulkan device has no geometry shaders");
@@ -85,7 +82,7 @@ int runBenchLeaves(const BenchLeavesOptions& o) {
   std::printf("%s: %zu quads (%s, factor %g), %zu leaves grown at %d levels; %ux%u on %s, %d frames per row after one warm-up%s\n\n",
               params.name.c_str(), tree.mesh.quads.size(), render::renderModeName(base.mode), static_cast<double>(base.tessLevel),
               skeleton.leaves.size(), growth.levels, width, height, context.deviceDescription().c_str(), o.frames,
-              contextOptions.validation ? ", validation on" : "");
+              context.validationEnabled() ? ", validation on" : "");
   std::printf("| leaves | self-shadowing | triangles | CPU frame ms (min-max) | GPU frame ms (min-max) | frames/s |\n");
   std::printf("|---|---|---|---|---|---|\n");
   std::fflush(stdout);

@@ -127,10 +127,7 @@ int runBenchTess(const BenchTessOptions& o) {
   }
 
   const SpeciesParams params = loadSpeciesArgument(o.species);
-  vk::ContextOptions contextOptions;
-  contextOptions.validation = validationWanted(o.validation);
-  contextOptions.device = o.device;
-  vk::VulkanContext context(contextOptions);
+  vk::VulkanContext context(vulkanOptions(o.validation, o.device));
   render::RenderSession session(context, width, height, VK_SAMPLE_COUNT_1_BIT, render::loadTreeTextures(assetDirectory()));
   const float aspect = static_cast<float>(width) / static_cast<float>(height);
 
@@ -171,7 +168,7 @@ int runBenchTess(const BenchTessOptions& o) {
   const bool hostTimed = context.isLavapipe();
 
   std::printf("%s: %s at %ux%u on %s, %d frames per cell after one warm-up%s\n\n", params.name.c_str(), scene.description.c_str(),
-              width, height, context.deviceDescription().c_str(), o.frames, contextOptions.validation ? ", validation on" : "");
+              width, height, context.deviceDescription().c_str(), o.frames, context.validationEnabled() ? ", validation on" : "");
   std::fflush(stdout);
 
   auto measure = [&](const std::string& label, const render::RenderSettings& s) {

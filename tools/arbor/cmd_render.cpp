@@ -84,10 +84,7 @@ int runRender(const RenderOptions& o) {
   const auto [tree, impostors] = meshWithFakeBranches(skeleton, meshLevels);
   const PatchSet patches = buildPatches(tree.mesh);
 
-  vk::ContextOptions contextOptions;
-  contextOptions.validation = validationWanted(o.validation);
-  contextOptions.device = o.device;
-  vk::VulkanContext context(contextOptions);
+  vk::VulkanContext context(vulkanOptions(o.validation, o.device));
   const auto textures = render::loadTreeTextures(assetDirectory());
   const auto samples = static_cast<VkSampleCountFlagBits>(o.msaa);
   render::RenderSession session(context, width, height, samples, textures);
@@ -125,7 +122,7 @@ int runRender(const RenderOptions& o) {
   std::sort(cpu.begin(), cpu.end());
   const render::GpuTree& gpuTree = *session.tree();
   std::printf("%s on %s%s\n", params.name.c_str(), context.deviceDescription().c_str(),
-              contextOptions.validation ? ", validation on" : "");
+              context.validationEnabled() ? ", validation on" : "");
   std::printf("  mode             %s", render::renderModeName(settings.mode));
   if (settings.mode != render::RenderMode::Flat) {
     if (settings.adaptivePixels > 0.0f) std::printf(", adaptive to %.1f px edges", static_cast<double>(settings.adaptivePixels));

@@ -149,10 +149,7 @@ int runOffscreen(const ViewOptions& o, ViewState& state, const std::vector<Speci
   const bool tour = o.frames <= 0 && path.empty();
   std::uint32_t width = 0, height = 0;
   parseSize(o.size, width, height);
-  vk::ContextOptions contextOptions;
-  contextOptions.validation = validationWanted(o.validation);
-  contextOptions.device = o.device;
-  vk::VulkanContext context(contextOptions);
+  vk::VulkanContext context(vulkanOptions(o.validation, o.device));
   applyDeviceDefaults(o, context, state);
   render::RenderSession session(context, width, height, VK_SAMPLE_COUNT_1_BIT, render::loadTreeTextures(assetDirectory()));
   const render::Forest forest(context, forestOptions(o, params), progressLine);
@@ -187,12 +184,10 @@ int runWindow(const ViewOptions& o, ViewState& state, std::vector<SpeciesParams>
   parseSize(o.size, width, height);
   window::Window win("Arbor", static_cast<int>(width), static_cast<int>(height));
   if (o.fullscreen) win.toggleFullscreen();
-  vk::ContextOptions contextOptions;
-  contextOptions.validation = validationWanted(o.validation);
-  contextOptions.device = o.device;
-  contextOptions.instanceExtensions = window::requiredInstanceExtensions();
-  contextOptions.deviceExtensions = {VK_KHR_SWAPCHAIN_EXTENSION_NAME};
-  vk::VulkanContext context(contextOptions);
+  vk::ContextOptions options = vulkanOptions(o.validation, o.device);
+  options.instanceExtensions = window::requiredInstanceExtensions();
+  options.deviceExtensions = {VK_KHR_SWAPCHAIN_EXTENSION_NAME};
+  vk::VulkanContext context(options);
   applyDeviceDefaults(o, context, state);
   const VkSurfaceKHR surface = win.createSurface(context.instance());
   int status = 0;

@@ -34,6 +34,13 @@ bool validationWanted(bool flag) {
 #endif
 }
 
+vk::ContextOptions vulkanOptions(bool validationFlag, const std::string& device) {
+  vk::ContextOptions options;
+  options.validation = validationWanted(validationFlag);
+  options.device = device;
+  return options;
+}
+
 bool reportValidationErrors(const vk::VulkanContext& context) {
   if (context.validationErrors() == 0) return false;
   std::fprintf(stderr, "arbor: error: %u Vulkan validation errors (see above)\n", context.validationErrors());

@@ -16,6 +16,8 @@ void parseSize(const std::string& text, std::uint32_t& width, std::uint32_t& hei
 glm::vec3 parseLight(const std::string& text);
 // On when asked for, when ARBOR_VALIDATION=1 (the tests set it), and always in debug builds.
 bool validationWanted(bool flag);
+// What every Vulkan command asks of the context: validation as validationWanted decides, the preferred device.
+vk::ContextOptions vulkanOptions(bool validationFlag, const std::string& device);
 // True (after saying how many on stderr) when the context's validation layer reported errors.
 bool reportValidationErrors(const vk::VulkanContext& context);
 
