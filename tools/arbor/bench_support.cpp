@@ -51,6 +51,7 @@ TimedFrames timeFrames(render::RenderSession& session, const render::Camera& cam
   TimedFrames t;
   const auto frame = [&] { return instances ? session.render(camera, settings, *instances) : session.render(camera, settings); };
   t.last = frame();  // warm-up: pipelines, caches
+  t.firstCpuMs = t.last.cpuMilliseconds;
   for (int f = 0; f < frames; ++f) {
     t.last = frame();
     cpu.push_back(t.last.cpuMilliseconds);

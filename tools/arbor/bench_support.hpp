@@ -18,6 +18,7 @@ struct Figures {
 
 struct TimedFrames {
   Figures cpu, gpu;             // milliseconds: host (record, submit, wait) and timestamps
+  double firstCpuMs = 0.0;      // the warm-up frame's host time
   bool hasGpu = false;
   render::FrameResult last;
 };
