@@ -84,7 +84,6 @@ Swapchain::Swapchain(const vk::VulkanContext& context, VkSurfaceKHR surface, VkE
   vk::check(vkCreateSemaphore(context.device(), &semaphore, nullptr, &imageAvailable_), "vkCreateSemaphore");
   vk::check(vkCreateSemaphore(context.device(), &semaphore, nullptr, &renderFinished_), "vkCreateSemaphore");
   VkFenceCreateInfo fence{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
-  fence.flags = VK_FENCE_CREATE_SIGNALED_BIT;
   vk::check(vkCreateFence(context.device(), &fence, nullptr, &inFlight_), "vkCreateFence");
   build(size);
 }
@@ -174,8 +173,7 @@ void Swapchain::build(VkExtent2D size) {
 }
 
 bool Swapchain::beginFrame(VkCommandBuffer& cmd) {
-  const VkDevice device = context_.device();
-  vk::check(vkWaitForFences(device, 1, &inFlight_, VK_TRUE, UINT64_MAX), "vkWaitForFences");
+  const VkDevice device = context_.device();  // the previous frame is done: endFrame waited for it
   const VkResult acquired = vkAcquireNextImageKHR(device, swapchain_, UINT64_MAX, imageAvailable_, VK_NULL_HANDLE, &current_);
   if (acquired == VK_ERROR_OUT_OF_DATE_KHR) return false;
   if (acquired != VK_SUBOPTIMAL_KHR) vk::check(acquired, "vkAcquireNextImageKHR");

@@ -23,12 +23,13 @@ class Swapchain {
   VkPresentModeKHR presentMode() const { return presentMode_; }
   void recreate(VkExtent2D size);
 
-  // Waits for the previous frame, acquires an image and begins the command buffer; false: out of date.
+  // Acquires an image and begins the command buffer; false: out of date.
   bool beginFrame(VkCommandBuffer& cmd);
   VkFramebuffer framebuffer() const { return framebuffers_[current_]; }
   // After the render pass: copy the image for screenshot() (valid once the frame is done).
   void recordScreenshot(VkCommandBuffer cmd);
-  // Ends the command buffer, submits and presents; false: out of date or suboptimal (recreate).
+  // Ends the command buffer, submits, presents and waits for the frame; false: out of date or suboptimal
+  // (recreate).
   bool endFrame();
   void waitIdle() const;
   Image screenshot() const;  // RGBA, row 0 at the top, of the last frame that recorded one

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <optional>
 
 #include <GLFW/glfw3.h>
 
@@ -110,19 +111,30 @@ std::string describe(const render::ForestFrame& f) {
          std::to_string(f.perDetail[2]) + ", " + std::to_string(f.culled) + " culled)";
 }
 
-// "FULL,REDUCED" in metres; empty: what the device affords. Lavapipe tessellates the whole mesh of a large
-// tree in seconds, so there the nearest trees already fake their deepest level.
-render::DetailDistances parseDetail(const std::string& text, bool lavapipe) {
-  if (text.empty()) return lavapipe ? render::DetailDistances{0.0f, 15.0f} : render::DetailDistances{};
+// "FULL,REDUCED" in metres; empty: none given (the device decides).
+std::optional<render::DetailDistances> parseDetail(const std::string& text) {
+  if (text.empty()) return std::nullopt;
   const std::vector<float> v = parseNumbers(text, "--detail", 0.0f, 100000.0f);
   if (v.size() != 2 || v[1] < v[0]) throw SpeciesError(text, "--detail", "expected FULL,REDUCED metres with FULL <= REDUCED, e.g. 40,150");
-  return {v[0], v[1]};
+  return render::DetailDistances{v[0], v[1]};
 }
+
+// Everything the options say, read once before anything is grown, so that bad input fails early.
+struct ViewPlan {
+  std::uint32_t width = 0, height = 0;
+  std::vector<SpeciesParams> params;
+  std::vector<render::Camera> path;  // empty: the forest's tour
+  std::vector<WindowEvent> events;
+  std::optional<render::DetailDistances> detail;
+  int frames = 0, every = 1;  // scripted runs: frames (0: interactive), a screenshot every `every`
+};
 
 // What the options leave open, chosen for the device: lavapipe gets fewer meshed levels and a lower largest
 // adaptive factor (it splits tessellated draws by the largest: 15 patches a draw at 64, 226 at 16).
-void applyDeviceDefaults(const ViewOptions& o, const vk::VulkanContext& context, ViewState& state) {
-  state.detail = parseDetail(o.detail, context.isLavapipe());
+// Lavapipe tessellates the whole mesh of a large tree in seconds, so there the nearest trees already fake their
+// deepest level.
+void applyDeviceDefaults(const ViewOptions& o, const ViewPlan& plan, const vk::VulkanContext& context, ViewState& state) {
+  state.detail = plan.detail.value_or(context.isLavapipe() ? render::DetailDistances{0.0f, 15.0f} : render::DetailDistances{});
   if (o.maxTess <= 0.0f && context.isLavapipe()) state.settings.maxLevel = 16.0f;
 }
 
@@ -144,15 +156,16 @@ void beginPass(VkCommandBuffer cmd, VkRenderPass pass, VkFramebuffer framebuffer
 }
 
 // No display (or --offscreen): the same scene through the offscreen target, every screenshot a PNG.
-int runOffscreen(const ViewOptions& o, ViewState& state, const std::vector<SpeciesParams>& params, const std::vector<render::Camera>& path,
-                 int frames, int every) {
-  const bool tour = o.frames <= 0 && path.empty();
-  std::uint32_t width = 0, height = 0;
-  parseSize(o.size, width, height);
+int runOffscreen(const ViewOptions& o, const ViewPlan& plan, ViewState& state) {
+  const std::vector<render::Camera>& path = plan.path;
+  const bool tour = plan.frames <= 0 && path.empty();
+  int frames = std::max(plan.frames, 1);
+  const int every = plan.frames > 0 ? plan.every : 1;
+  const std::uint32_t width = plan.width, height = plan.height;
   vk::VulkanContext context(vulkanOptions(o.validation, o.device));
-  applyDeviceDefaults(o, context, state);
+  applyDeviceDefaults(o, plan, context, state);
   render::RenderSession session(context, width, height, VK_SAMPLE_COUNT_1_BIT, render::loadTreeTextures(assetDirectory()));
-  const render::Forest forest(context, forestOptions(o, params), progressLine);
+  const render::Forest forest(context, forestOptions(o, plan.params), progressLine);
   session.renderer().setTrees(forest.gpuTrees());
   const float aspect = static_cast<float>(width) / static_cast<float>(height);
   const std::vector<render::Camera> keys = path.empty() ? forest.tour(aspect) : path;
@@ -178,17 +191,17 @@ int runOffscreen(const ViewOptions& o, ViewState& state, const std::vector<Speci
   return 0;
 }
 
-int runWindow(const ViewOptions& o, ViewState& state, std::vector<SpeciesParams>& params, const std::vector<render::Camera>& path,
-              int frames, int every) {
-  std::uint32_t width = 0, height = 0;
-  parseSize(o.size, width, height);
-  window::Window win("Arbor", static_cast<int>(width), static_cast<int>(height));
+int runWindow(const ViewOptions& o, ViewPlan& plan, ViewState& state) {
+  const std::vector<render::Camera>& path = plan.path;
+  std::vector<SpeciesParams>& params = plan.params;  // the panel edits them
+  const int frames = plan.frames, every = plan.every;
+  window::Window win("Arbor", static_cast<int>(plan.width), static_cast<int>(plan.height));
   if (o.fullscreen) win.toggleFullscreen();
   vk::ContextOptions options = vulkanOptions(o.validation, o.device);
   options.instanceExtensions = window::requiredInstanceExtensions();
   options.deviceExtensions = {VK_KHR_SWAPCHAIN_EXTENSION_NAME};
   vk::VulkanContext context(options);
-  applyDeviceDefaults(o, context, state);
+  applyDeviceDefaults(o, plan, context, state);
   const VkSurfaceKHR surface = win.createSurface(context.instance());
   int status = 0;
   {
@@ -210,7 +223,7 @@ int runWindow(const ViewOptions& o, ViewState& state, std::vector<SpeciesParams>
     std::printf("arbor view: %s on %s, %s; %zu distinct trees, %zu placed\n", scripted ? "scripted" : "interactive",
                 context.deviceDescription().c_str(), o.noVsync ? "vsync off" : "vsync on", forest->trees().size(), forest->placements().size());
     std::fflush(stdout);  // scripts wait for this line
-    const std::vector<WindowEvent> events = parseEvents(o.events);
+    const std::vector<WindowEvent>& events = plan.events;
     std::vector<double> frameMs;
     for (int f = 0; !win.shouldClose() && (!scripted || f < frames); ++f) {
       for (const WindowEvent& e : events) {
@@ -330,21 +343,22 @@ int runView(const ViewOptions& o) {
   s.impostors = true;  // only the reduced details have fake branches
   s.leafLodDistance = o.leafLod;
   s.shadowLeaves = static_cast<std::uint32_t>(o.shadowLeaves);
-  s.lightDirection = parseLight(o.light);
-  std::sscanf(o.light.c_str(), "%f,%f", &state.lightAzimuth, &state.lightElevation);
-  parseDetail(o.detail, false);  // bad input fails before anything is grown
-  std::uint32_t width = 0, height = 0;
-  parseSize(o.size, width, height);  // bad input fails before anything is grown
-  parseEvents(o.events);
-  std::vector<SpeciesParams> params;
-  for (const std::string& name : o.species) params.push_back(loadSpeciesArgument(name));
-  const std::vector<render::Camera> path = o.cameraPath.empty() ? std::vector<render::Camera>{} : readCameraPath(o.cameraPath);
+  const glm::vec2 sun = parseSunAngles(o.light);
+  state.lightAzimuth = sun.x;
+  state.lightElevation = sun.y;
+  s.lightDirection = render::sunDirection(sun.x, sun.y);
+  ViewPlan plan;
+  parseSize(o.size, plan.width, plan.height);
+  plan.detail = parseDetail(o.detail);
+  plan.events = parseEvents(o.events);
+  for (const std::string& name : o.species) plan.params.push_back(loadSpeciesArgument(name));
+  if (!o.cameraPath.empty()) plan.path = readCameraPath(o.cameraPath);
   // Scripted: a camera path or a frame count; without a display the scene goes to PNG files instead.
   const bool scripted = !o.cameraPath.empty() || o.frames > 0;
-  const int frames = o.frames > 0 ? o.frames : (scripted ? 60 : 0);
-  const int every = o.screenshotEvery > 0 ? o.screenshotEvery : std::max(1, frames);
-  if (o.offscreen || !window::displayAvailable()) return runOffscreen(o, state, params, path, frames > 0 ? frames : 1, frames > 0 ? every : 1);
-  return runWindow(o, state, params, path, frames, every);
+  plan.frames = o.frames > 0 ? o.frames : (scripted ? 60 : 0);
+  plan.every = o.screenshotEvery > 0 ? o.screenshotEvery : std::max(1, plan.frames);
+  if (o.offscreen || !window::displayAvailable()) return runOffscreen(o, plan, state);
+  return runWindow(o, plan, state);
 }
 
 }  // namespace

@@ -47,14 +47,19 @@ bool reportValidationErrors(const vk::VulkanContext& context) {
   return true;
 }
 
-glm::vec3 parseLight(const std::string& text) {
+glm::vec2 parseSunAngles(const std::string& text) {
   float az = 0.0f, el = 0.0f;
   char comma = 0, rest = 0;
   if (std::sscanf(text.c_str(), "%f%c%f%c", &az, &comma, &el, &rest) != 3 || comma != ',' || !(el >= -90.0f && el <= 90.0f) ||
       !std::isfinite(az)) {
     throw SpeciesError(text, "--light", "expected AZIMUTH,ELEVATION in degrees, elevation from -90 to 90, e.g. 30,45");
   }
-  return render::sunDirection(az, el);
+  return {az, el};
+}
+
+glm::vec3 parseLight(const std::string& text) {
+  const glm::vec2 angles = parseSunAngles(text);
+  return render::sunDirection(angles.x, angles.y);
 }
 
 }  // namespace arbor::cli
