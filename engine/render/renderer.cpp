@@ -222,10 +222,6 @@ void TreeRenderer::beginFrame(VkCommandBuffer cmd, const Camera& camera, VkExten
   if (timestamps_) vkCmdResetQueryPool(cmd, timestamps_, 0, kTimestampCount);
 }
 
-void TreeRenderer::draw(VkCommandBuffer cmd, VkExtent2D extent, const RenderSettings& s, const glm::mat4& model) {
-  draw(cmd, extent, s, trees_.empty() ? std::vector<TreeInstance>{} : std::vector<TreeInstance>{{0, model}});
-}
-
 void TreeRenderer::draw(VkCommandBuffer cmd, VkExtent2D extent, const RenderSettings& s, const std::vector<TreeInstance>& instances) {
   const VkViewport viewport{0.0f, 0.0f, static_cast<float>(extent.width), static_cast<float>(extent.height), 0.0f, 1.0f};
   const VkRect2D scissor{{0, 0}, extent};

@@ -84,9 +84,7 @@ class TreeRenderer {
 
   // Before the render pass begins: reset the queries, upload the scene.
   void beginFrame(VkCommandBuffer cmd, const Camera& camera, VkExtent2D extent, const RenderSettings& settings);
-  // Inside the render pass: sky, ground and the first tree at `model`.
-  void draw(VkCommandBuffer cmd, VkExtent2D extent, const RenderSettings& settings, const glm::mat4& model = glm::mat4(1.0f));
-  // Sky, ground and every instance (statistics and time cover all of them).
+  // Inside the render pass: sky, ground and every instance (statistics and time cover all of them).
   void draw(VkCommandBuffer cmd, VkExtent2D extent, const RenderSettings& settings, const std::vector<TreeInstance>& instances);
   // After the frame's commands have completed.
   FrameStats stats() const;
