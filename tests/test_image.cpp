@@ -360,3 +360,18 @@ TEST_CASE("a plot draws each series in its colour along a rising line, with a le
   REQUIRE(right > 0);
   CHECK(leftY / left > rightY / right);
 }
+
+TEST_CASE("differing pixels are those where any colour channel differs, alpha aside", "[image]") {
+  Image a;
+  a.width = 3;
+  a.height = 1;
+  a.rgba = {10, 20, 30, 255, 10, 20, 30, 255, 10, 20, 30, 255};
+  Image b = a;
+  b.rgba[6] = 31;  // pixel 1, blue
+  b.rgba[11] = 0;  // pixel 2, alpha only
+  CHECK(differingPixels(a, b) == std::vector<bool>{false, true, false});
+  Image c = a;
+  c.width = 1;
+  c.height = 3;
+  CHECK_THROWS_AS(differingPixels(a, c), std::invalid_argument);
+}

@@ -4,20 +4,12 @@
 #include <algorithm>
 #include <cmath>
 
+#include "image/image_compare.hpp"
 #include "render_support.hpp"
 
 using namespace arbor;
 
 namespace {
-
-// Pixels where the picture differs from the same view without a tree.
-std::vector<bool> treeMask(const Image& picture, const Image& empty) {
-  std::vector<bool> mask(picture.rgba.size() / 4);
-  for (std::size_t p = 0; p < mask.size(); ++p) {
-    for (std::size_t c = 0; c < 3; ++c) mask[p] = mask[p] || picture.rgba[4 * p + c] != empty.rgba[4 * p + c];
-  }
-  return mask;
-}
 
 // How far apart two masks' coverage is, block by block (8x8 pixels): the summed difference of the tree pixels
 // each block holds, over the reference's tree pixels. Twigs thinner than a pixel land on different pixels in
@@ -74,10 +66,10 @@ TEST_CASE("fake branches cover what the mesh of their levels would", "[render][i
   settings.tessLevel = 4.0f;
   settings.ground = false;
   const Image sky = (empty.render(camera, settings), empty.image());
-  const auto fullMask = treeMask((full.session.render(camera, settings), full.session.image()), sky);
-  const auto bareMask = treeMask((faked.session.render(camera, settings), faked.session.image()), sky);
+  const auto fullMask = differingPixels((full.session.render(camera, settings), full.session.image()), sky);
+  const auto bareMask = differingPixels((faked.session.render(camera, settings), faked.session.image()), sky);
   settings.impostors = true;
-  const auto fakedMask = treeMask((faked.session.render(camera, settings), faked.session.image()), sky);
+  const auto fakedMask = differingPixels((faked.session.render(camera, settings), faked.session.image()), sky);
   const double fakedError = blockCoverageError(fakedMask, fullMask, kWidth), bareError = blockCoverageError(bareMask, fullMask, kWidth);
   INFO("tree pixels: full mesh " << count(fullMask) << ", mesh + fake branches " << count(fakedMask) << ", mesh alone "
                                  << count(bareMask) << "; block coverage error " << fakedError << " (faked), " << bareError << " (bare)");

@@ -71,4 +71,13 @@ Image differenceImage(const Image& a, const Image& b) {
   return out;
 }
 
+std::vector<bool> differingPixels(const Image& a, const Image& b) {
+  requireSameSize(a, b, "differingPixels");
+  std::vector<bool> differs(a.rgba.size() / 4);
+  for (std::size_t p = 0; p < differs.size(); ++p) {
+    differs[p] = a.rgba[4 * p] != b.rgba[4 * p] || a.rgba[4 * p + 1] != b.rgba[4 * p + 1] || a.rgba[4 * p + 2] != b.rgba[4 * p + 2];
+  }
+  return differs;
+}
+
 }  // namespace arbor

@@ -1,6 +1,7 @@
 #pragma once
 // How far two images of the same size are apart: renders against references, tolerant of small GPU differences.
 #include <cstddef>
+#include <vector>
 
 #include "png_io.hpp"
 
@@ -20,5 +21,9 @@ ImageDifference compareImages(const Image& a, const Image& b, int threshold);
 // Black where the images agree; each channel's difference amplified so that one level is already visible.
 // Opaque. Throws std::invalid_argument when the sizes differ.
 Image differenceImage(const Image& a, const Image& b);
+
+// Per pixel, row by row: whether R, G or B differs at all (what a drawing added to a picture without it).
+// Throws std::invalid_argument when the sizes differ.
+std::vector<bool> differingPixels(const Image& a, const Image& b);
 
 }  // namespace arbor
