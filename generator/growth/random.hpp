@@ -3,14 +3,10 @@
 // gives the same stem whatever else is generated (breadth-first level invariance, Nystad 5.2.2).
 #include <cstdint>
 
+#include "common/mix64.hpp"
+
 namespace arbor {
 
-// SplitMix64 finaliser: a good 64-bit mix, used both to derive keys and as the generator step.
-constexpr std::uint64_t mix64(std::uint64_t z) {
-  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-  return z ^ (z >> 31);
-}
 
 // Key of a child, clone or leaf from its parent's key, what it is and its index.
 constexpr std::uint64_t childKey(std::uint64_t parent, std::uint64_t kind, std::uint64_t index) {

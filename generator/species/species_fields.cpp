@@ -16,7 +16,7 @@ constexpr double kNone = 0.0;
 
 // Order here is the order of the written JSON and of the documentation.
 const std::array kTreeFields = {
-    TreeField{"Name", nullptr, FieldType::Text, 0, 0, true, kNone, "Species name shown in summaries."},
+    TreeField{"Name", nullptr, FieldType::Text, 0, 0, true, kNone, "Species name shown in summaries: 1 to 200 bytes of printable UTF-8."},
     TreeField{"Shape", "Shape", FieldType::Integer, 0, 8, true, kNone,
               "Crown shape for level-1 lengths: 0 conical, 1 spherical, 2 hemispherical, 3 cylindrical, "
               "4 tapered cylindrical, 5 flame, 6 inverse conical, 7 tend flame, 8 pruning envelope.",

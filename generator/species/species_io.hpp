@@ -1,23 +1,22 @@
 #pragma once
 // Reading and writing species files: Arbor JSON (documented in docs/species-format.md) and Arbaro XML.
-#include <stdexcept>
+#include <cstdint>
 #include <string>
 #include <vector>
 
+#include "common/input_error.hpp"
 #include "species.hpp"
 
 namespace arbor {
 
 // Bad input: names the file, the field and what is allowed. Callers exit with code 2.
-class SpeciesError : public std::runtime_error {
+class SpeciesError : public InputError {
  public:
-  SpeciesError(std::string file, std::string field, const std::string& message);
-  const std::string& file() const { return file_; }
-  const std::string& field() const { return field_; }
-
- private:
-  std::string file_, field_;
+  using InputError::InputError;
 };
+
+// Species files are small; anything larger is refused before it is parsed.
+constexpr std::size_t kMaxSpeciesFileBytes = 1024 * 1024;
 
 // Parameters an Arbaro file left out and the default each took (reported, never silent).
 struct ImportNotes {
@@ -36,6 +35,12 @@ std::string writeSpeciesJson(const SpeciesParams& params);
 
 // The field-by-field documentation of the format (docs/species-format.md).
 std::string speciesFormatMarkdown();
+
+// A species name is 1 to 200 bytes of printable UTF-8 (it reaches terminals and JSON files unchanged).
+void requireSpeciesName(const std::string& name, const std::string& file, const std::string& field);
+
+// A species with every field drawn evenly from its documented range (stress tests; the same seed, the same species).
+SpeciesParams randomSpecies(std::uint64_t seed);
 
 // Range and cross-field checks shared by both readers.
 void validateSpecies(const SpeciesParams& params, const std::string& file);

@@ -5,6 +5,7 @@
 #include "species_fields.hpp"
 #include "species_io.hpp"
 #include "common/atomic_file.hpp"
+#include "common/input_file.hpp"
 #include "common/text_util.hpp"
 
 namespace arbor {
@@ -79,7 +80,7 @@ void readTreeField(const json& root, const TreeField& f, SpeciesParams& p, const
   switch (f.type) {
     case FieldType::Text:
       p.name = readString(v, file, field, "a string");
-      if (p.name.empty()) throw SpeciesError(file, field, "must not be empty");
+      requireSpeciesName(p.name, file, field);
       break;
     case FieldType::AngleRule: {
       const std::string s = readString(v, file, field, "\"natural\" or \"classic\"");
@@ -120,14 +121,10 @@ StemLevelParams readLevel(const json& entry, std::size_t index, const std::strin
 }
 
 // nlohmann reports a byte offset; name the line, column and the field being read there.
-[[noreturn]] void throwParseError(const std::string& text, const json::parse_error& e, const std::string& file) {
-  const std::size_t at = std::min<std::size_t>(e.byte == 0 ? 0 : e.byte - 1, text.size());
-  std::size_t line = 1, column = 1;
-  for (std::size_t i = 0; i < at; ++i) {
-    if (text[i] == '\n') { ++line; column = 1; } else { ++column; }
-  }
+[[noreturn]] void throwParseError(const std::string& text, std::size_t byte, const std::string& file) {
+  const std::size_t at = std::min<std::size_t>(byte == 0 ? 0 : byte - 1, text.size());
   std::string field = lastJsonKeyBefore(text, at);
-  std::string message = "invalid JSON at line " + std::to_string(line) + ", column " + std::to_string(column);
+  std::string message = "invalid JSON at " + lineAndColumn(text, at);
   const std::string tail = text.substr(at, 8);
   if (tail.rfind("NaN", 0) == 0 || tail.rfind("Inf", 0) == 0 || tail.rfind("-Inf", 0) == 0 ||
       tail.rfind("nan", 0) == 0 || tail.rfind("inf", 0) == 0) {
@@ -136,15 +133,104 @@ StemLevelParams readLevel(const json& entry, std::size_t index, const std::strin
   throw SpeciesError(file, field.empty() ? "(document)" : field, message);
 }
 
+// Brackets nested deeper than any species file needs are refused before the parser recurses into them.
+void requireShallow(const std::string& text, const std::string& file, int maxDepth) {
+  int depth = 0;
+  bool inString = false, escaped = false;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (inString) {
+      if (escaped) escaped = false;
+      else if (c == '\\') escaped = true;
+      else if (c == '"') inString = false;
+      continue;
+    }
+    if (c == '"') inString = true;
+    else if (c == '{' || c == '[') {
+      if (++depth > maxDepth) {
+        throw SpeciesError(file, "(document)", "nested deeper than " + std::to_string(maxDepth) + " levels at " + lineAndColumn(text, i) +
+                                                   "; a species file is an object of numbers with one array of level objects");
+      }
+    } else if (c == '}' || c == ']') {
+      --depth;
+    }
+  }
+}
+
+// Where the parser stands: one frame per open object or array, so that a repeated key can be named by its path.
+struct JsonPath {
+  struct Frame {
+    bool object = false;
+    std::vector<std::string> keys;  // objects: keys seen so far
+    std::size_t index = 0;          // arrays: the element being read
+  };
+  std::vector<Frame> frames;
+
+  std::string prefix() const {
+    std::string out;
+    for (const Frame& f : frames) {
+      if (f.object && !f.keys.empty() && &f != &frames.back()) out += (out.empty() ? "" : ".") + f.keys.back();
+      if (!f.object) out += "[" + std::to_string(f.index) + "]";
+    }
+    return out;
+  }
+  void elementDone() {
+    if (!frames.empty() && !frames.back().object) ++frames.back().index;
+  }
+};
+
+// Parses with nlohmann, refusing what it would silently accept: a key given twice in one object (the last one
+// would win) and numbers beyond a double (reported by the library without a place).
+json parseStrict(const std::string& text, const std::string& file) {
+  JsonPath path;
+  const json::parser_callback_t callback = [&](int, json::parse_event_t event, json& parsed) {
+    switch (event) {
+      case json::parse_event_t::object_start: path.frames.push_back({true, {}, 0}); break;
+      case json::parse_event_t::array_start: path.frames.push_back({false, {}, 0}); break;
+      case json::parse_event_t::key: {
+        const std::string key = parsed.get<std::string>();
+        auto& keys = path.frames.back().keys;
+        if (std::find(keys.begin(), keys.end(), key) != keys.end()) {
+          const std::string prefix = path.prefix();
+          throw SpeciesError(file, prefix.empty() ? key : prefix + "." + key, "given twice in one object; give each field once");
+        }
+        keys.push_back(key);
+        break;
+      }
+      case json::parse_event_t::object_end:
+      case json::parse_event_t::array_end:
+        path.frames.pop_back();
+        path.elementDone();
+        break;
+      case json::parse_event_t::value: path.elementDone(); break;
+    }
+    return true;
+  };
+  try {
+    return json::parse(text, callback);
+  } catch (const json::parse_error& e) {
+    throwParseError(text, e.byte, file);
+  } catch (const json::out_of_range& e) {
+    // "number overflow parsing '1e309'": find the number to name its place and field.
+    const std::string what = e.what();
+    const std::size_t open = what.find('\''), close = what.rfind('\'');
+    const std::string token = open != std::string::npos && close > open ? what.substr(open + 1, close - open - 1) : "";
+    const std::size_t at = token.empty() ? std::string::npos : text.find(token);
+    const std::string field = at == std::string::npos ? "" : lastJsonKeyBefore(text, at);
+    throw SpeciesError(file, field.empty() ? "(document)" : field,
+                       (token.empty() ? std::string("a number") : "'" + token + "'") + " is beyond the range of a double" +
+                           (at == std::string::npos ? "" : " at " + lineAndColumn(text, at)) + "; give a finite number");
+  } catch (const json::exception& e) {
+    throw SpeciesError(file, "(document)", std::string("invalid JSON: ") + e.what());
+  }
+}
+
 }  // namespace
 
 SpeciesParams readSpeciesJson(const std::string& text, const std::string& file) {
-  json root;
-  try {
-    root = json::parse(text);
-  } catch (const json::parse_error& e) {
-    throwParseError(text, e, file);
-  }
+  requireText(text, file);
+  requireShallow(text, file, 8);
+  const json root = parseStrict(text, file);
   if (!root.is_object()) throw SpeciesError(file, "(document)", "expected a JSON object of species parameters");
 
   std::vector<const char*> extra = {kFormatKey, kLevelsKey};
@@ -197,6 +283,16 @@ std::string writeSpeciesJson(const SpeciesParams& p) {
   return root.dump(2) + "\n";
 }
 
+void requireSpeciesName(const std::string& name, const std::string& file, const std::string& field) {
+  const std::string allowed = "; allowed: 1 to 200 bytes of printable UTF-8 text";
+  if (name.empty() || name.size() > 200) throw SpeciesError(file, field, "has " + std::to_string(name.size()) + " bytes" + allowed);
+  if (!isValidUtf8(name)) throw SpeciesError(file, field, "is not valid UTF-8" + allowed);
+  for (char c : name) {
+    const auto u = static_cast<unsigned char>(c);
+    if (u < 0x20 || u == 0x7F) throw SpeciesError(file, field, "holds a control character" + allowed);
+  }
+}
+
 void validateSpecies(const SpeciesParams& p, const std::string& file) {
   if (static_cast<int>(p.stemLevels.size()) < p.levels) {
     throw SpeciesError(file, "StemLevels",
@@ -216,16 +312,8 @@ void validateSpecies(const SpeciesParams& p, const std::string& file) {
 SpeciesParams loadSpeciesFile(const std::string& path, ImportNotes* notes) {
   const bool json = endsWith(path, ".json"), xml = endsWith(path, ".xml");
   if (!json && !xml) throw SpeciesError(path, "(file)", "unknown species file type; use .json (Arbor) or .xml (Arbaro)");
-  std::string text;
-  try {
-    text = readFile(path);
-  } catch (const std::runtime_error&) {
-    throw SpeciesError(path, "(file)", "cannot be opened for reading");
-  }
+  const std::string text = readInputFile(path, kMaxSpeciesFileBytes);
   return json ? readSpeciesJson(text, path) : readSpeciesXml(text, path, notes);
 }
-
-SpeciesError::SpeciesError(std::string file, std::string field, const std::string& message)
-    : std::runtime_error(file + ": field '" + field + "': " + message), file_(std::move(file)), field_(std::move(field)) {}
 
 }  // namespace arbor

@@ -9,6 +9,7 @@
 
 #include "species_fields.hpp"
 #include "species_io.hpp"
+#include "common/input_file.hpp"
 #include "common/text_util.hpp"
 
 namespace arbor {
@@ -54,6 +55,7 @@ struct RawParams {
 }  // namespace
 
 SpeciesParams readSpeciesXml(const std::string& text, const std::string& file, ImportNotes* notes) {
+  requireText(text, file);
   tinyxml2::XMLDocument doc;
   if (doc.Parse(text.c_str(), text.size()) != tinyxml2::XML_SUCCESS) {
     throw SpeciesError(file, "(document)",
@@ -75,13 +77,16 @@ SpeciesParams readSpeciesXml(const std::string& text, const std::string& file, I
       throw SpeciesError(file, name ? name : "(param)",
                          "<param> at line " + std::to_string(e->GetLineNum()) + " needs name and value attributes");
     }
-    raw.values[name] = value;
+    if (!raw.values.emplace(name, value).second) {
+      throw SpeciesError(file, name, "given twice (again at line " + std::to_string(e->GetLineNum()) + "); give each parameter once");
+    }
   }
 
   SpeciesParams p;
   p.source = file;
   const char* speciesName = species->Attribute("name");
   p.name = speciesName && *speciesName ? speciesName : "unnamed";
+  requireSpeciesName(p.name, file, "name");
   p.angleRule = AngleRule::Natural;
 
   ImportNotes local;
@@ -170,7 +175,13 @@ SpeciesParams readSpeciesXml(const std::string& text, const std::string& file, I
     auto it = raw.values.find(name);
     if (it != raw.values.end()) {
       used[name] = true;
-      p.*member = parseValue(it->second, file, name);
+      const double x = parseValue(it->second, file, name);
+      for (const TreeField& f : treeFields()) {
+        if (f.real == member && (x < f.min || x > f.max)) {
+          throw SpeciesError(file, name, formatNumber(x) + " is out of range for a leaf angle; allowed " + rangeText(f.type, f.min, f.max));
+        }
+      }
+      p.*member = x;
     } else {
       for (const TreeField& f : treeFields()) {
         if (f.real == member) p.*member = f.fallback;
@@ -189,10 +200,15 @@ SpeciesParams readSpeciesXml(const std::string& text, const std::string& file, I
       bare = bare.substr(1);
     }
     const bool ignored = std::find(kIgnored.begin(), kIgnored.end(), bare) != kIgnored.end();
-    bool levelField = false;
-    for (const LevelField& f : levelFields()) levelField = levelField || bare == f.key;
+    const LevelField* levelField = nullptr;
+    for (const LevelField& f : levelFields()) {
+      if (bare == f.key) levelField = &f;
+    }
     if (ignored || (levelField && level >= 0 && level < kArbaroLevels)) {
-      parseValue(value, file, name);  // still must be a number
+      const double x = parseValue(value, file, name);  // still must be a number, and in range where it has one
+      if (levelField && (x < levelField->min || x > levelField->max)) {
+        throw SpeciesError(file, name, formatNumber(x) + " is out of range; allowed " + rangeText(levelField->type, levelField->min, levelField->max));
+      }
       out.ignored.push_back(name);
       continue;
     }

@@ -5,6 +5,8 @@
 #include <filesystem>
 #include <unistd.h>
 
+#include "common/input_file.hpp"
+
 namespace arbor::cli {
 
 namespace fs = std::filesystem;
@@ -33,9 +35,10 @@ std::vector<std::string> presetNames() {
 }
 
 SpeciesParams loadSpeciesArgument(const std::string& presetOrFile, ImportNotes* notes) {
-  if (fs::exists(presetOrFile)) return loadSpeciesFile(presetOrFile, notes);
+  if (inputExists(presetOrFile)) return loadSpeciesFile(presetOrFile, notes);
   const fs::path preset = fs::path(assetDirectory()) / "presets" / (presetOrFile + ".json");
-  if (fs::exists(preset)) {
+  std::error_code ec;
+  if (presetOrFile.find('/') == std::string::npos && fs::is_regular_file(preset, ec)) {
     SpeciesParams p = loadSpeciesFile(preset.string(), notes);
     return p;
   }

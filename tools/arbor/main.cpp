@@ -13,10 +13,10 @@ namespace arbor::cli {
 int runGuarded(const Action& action) {
   try {
     return action();
-  } catch (const SpeciesError& e) {
+  } catch (const InputError& e) {
     std::fprintf(stderr, "arbor: error: %s\n", e.what());
     return kExitBadInput;
-  } catch (const GenerationError& e) {
+  } catch (const LimitError& e) {
     std::fprintf(stderr, "arbor: error: %s\n", e.what());
     return kExitBadInput;
   } catch (const vk::VulkanError& e) {
