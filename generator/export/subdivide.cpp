@@ -11,6 +11,7 @@
 #include <glm/geometric.hpp>
 #include <opensubdiv/far/primvarRefiner.h>
 
+#include "common/input_error.hpp"
 #include "export_checks.hpp"
 #include "mesh/osd_topology.hpp"
 
@@ -98,8 +99,14 @@ glm::vec3 gradientOfV(const Primvar& ds, const Primvar& dt) {
 
 }  // namespace
 
-QuadMesh subdivide(const QuadMesh& mesh, int levels) {
+QuadMesh subdivide(const QuadMesh& mesh, int levels, std::size_t maxQuads) {
   if (levels < 1 || levels > 6) throw std::invalid_argument("subdivide: levels must be 1..6, got " + std::to_string(levels));
+  const double result = static_cast<double>(mesh.quads.size()) * std::pow(4.0, levels);
+  if (result > static_cast<double>(maxQuads)) {
+    throw LimitError(std::to_string(mesh.quads.size()) + " quads subdivided " + std::to_string(levels) + " times would be " +
+                     std::to_string(static_cast<std::uint64_t>(result)) + " quads, more than the limit of " + std::to_string(maxQuads) +
+                     "; subdivide fewer times or mesh fewer levels");
+  }
   const char* context = "subdivide";
   exporting::requirePerVertex(mesh, mesh.tangents.size(), "tangents", context);
   exporting::requirePerVertex(mesh, mesh.uvw.size(), "uvw", context);

@@ -1,6 +1,9 @@
 #pragma once
 // Catmull-Clark subdivision with OpenSubdiv, for artists who want the smooth surface as plain quads
 // (the engine tessellates on the GPU instead and never needs this).
+#include <cstddef>
+
+#include "growth/tree_estimate.hpp"
 #include "mesh/quad_mesh.hpp"
 
 namespace arbor {
@@ -19,6 +22,7 @@ namespace arbor {
 // std::runtime_error for anything OpenSubdiv reports as an error or warning and for non-manifold edges or
 // vertices (which OpenSubdiv would otherwise accept silently), so a bad mesh is never smoothed into
 // something plausible-looking. Calls are serialised internally: OpenSubdiv's callbacks are process-wide.
-QuadMesh subdivide(const QuadMesh& mesh, int levels);
+// A result of more than maxQuads quads is refused (LimitError) before anything is refined.
+QuadMesh subdivide(const QuadMesh& mesh, int levels, std::size_t maxQuads = TreeLimits{}.quads);
 
 }  // namespace arbor

@@ -1,6 +1,7 @@
 #include "skeleton_json.hpp"
 
 #include <cstdio>
+#include <sstream>
 
 #include "common/json_writer.hpp"
 
@@ -22,6 +23,13 @@ std::string hexKey(std::uint64_t key) {
 }  // namespace
 
 std::string writeSkeletonJson(const Skeleton& s) {
+  std::ostringstream out;
+  writeSkeletonJson(s, out);
+  return out.str();
+}
+
+void writeSkeletonJson(const Skeleton& s, std::ostream& out) {
+  constexpr std::size_t kChunk = 1 << 20;
   JsonWriter w(2);
   w.beginObject();
   w.field("format", "arbor-skeleton/1");
@@ -48,6 +56,7 @@ std::string writeSkeletonJson(const Skeleton& s) {
     w.field("radius", n.radius);
     w.field("startRadius", n.startRadius);
     w.endObject();
+    if (w.pending() > kChunk) w.flushTo(out);
   }
   w.endArray();
 
@@ -85,10 +94,11 @@ std::string writeSkeletonJson(const Skeleton& s) {
     w.field("width", l.width);
     w.field("kind", static_cast<int>(l.kind));
     w.endObject();
+    if (w.pending() > kChunk) w.flushTo(out);
   }
   w.endArray();
   w.endObject();
-  return w.str();
+  w.flushTo(out);
 }
 
 }  // namespace arbor

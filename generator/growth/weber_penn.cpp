@@ -23,8 +23,7 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 constexpr std::uint64_t kStreamPlacement = 4;
 constexpr int kPruneSteps = 7;  // bisection steps: the pruned length is within 1 % of the original
-constexpr double kMaxSlenderness = 500.0;  // length / radius beyond which a child is not grown
-constexpr double kMinStubness = 25.0;      // length / radius below which a child is not grown  // bisection steps: the pruned length is within 0.1 % of the original
+constexpr double kEstimateMargin = 16.0;   // refuse before growing only trees estimated this far past a limit
 
 // Geometry of one stem and its clones for a trial length (pruning grows several before keeping one).
 struct Grown {
@@ -45,6 +44,10 @@ class Grower {
       : p_(p), options_(o), tree_(tree), levels_(o.levels > 0 ? o.levels : p.levels), E_(p.treeShapeExponent) {}
 
   void run() {
+    // Hopeless trees are refused from their parameters; the estimate runs high (it cannot see the children
+    // that pruning and the slenderness rules drop), so only trees far past the limits go here.
+    const std::string excess = estimateTree(p_, levels_).excess(options_.limits, kEstimateMargin);
+    if (!excess.empty()) throw GenerationError(excess);
     tree_.stems.reserve(1024);
     tree_.leaves.reserve(4096);
     growTrunks();
@@ -66,14 +69,26 @@ class Grower {
   RawTree& tree_;
   const int levels_;
   const double E_;
-  std::size_t nodeEstimate_ = 0;
+  std::size_t nodesMade_ = 0;
+  std::size_t walked_ = 0;  // joints visited by the envelope walk under way
 
+  // Nodes are counted as they are made, clones included, so memory never runs past the limit's share.
   void countNodes(std::size_t n) {
-    nodeEstimate_ += n;
-    if (nodeEstimate_ > options_.maxNodes) {
-      throw GenerationError("the tree would have more than " + std::to_string(options_.maxNodes) +
-                            " nodes; lower Levels, Branches or SegSplits");
+    nodesMade_ += n;
+    if (nodesMade_ > options_.limits.nodes) throw GenerationError(tooManyNodes());
+  }
+
+  // Names what was grown when the limit was reached, level by level: the levels to look at.
+  std::string tooManyNodes() const {
+    std::vector<std::size_t> stems;
+    for (const RawStem& s : tree_.stems) {
+      if (stems.size() <= static_cast<std::size_t>(s.level)) stems.resize(static_cast<std::size_t>(s.level) + 1);
+      ++stems[static_cast<std::size_t>(s.level)];
     }
+    std::string grown;
+    for (std::size_t l = 0; l < stems.size(); ++l) grown += (l ? ", " : "") + std::to_string(stems[l]) + " on level " + std::to_string(l);
+    return "the tree would have more than " + std::to_string(options_.limits.nodes) + " nodes (stems grown when it was reached: " +
+           grown + "); lower Levels, Branches, SegSplits or CurveRes";
   }
 
   // Bend applied when entering segment s (Weber-Penn Curve / CurveBack / CurveV), radians.
@@ -144,7 +159,7 @@ class Grower {
   }
 
   Grown growGeometry(std::uint64_t key, int level, const Transform& base, double length, int firstSegment,
-                     double splitError) const {
+                     double splitError) {
     Grown g;
     g.key = key;
     g.firstSegment = firstSegment;
@@ -152,7 +167,8 @@ class Grower {
     g.joints.reserve(static_cast<std::size_t>(p_.level(level).curveRes - firstSegment));
     walkStem(
         key, level, base, length, firstSegment, splitError,
-        [&g](const Transform& joint) {
+        [&](const Transform& joint) {
+          countNodes(1);
           g.joints.push_back(joint);
           return true;
         },
@@ -165,11 +181,13 @@ class Grower {
   }
 
   // Whether every segment end of the stem and its clones lies in the envelope; stops at the first outside.
+  // A walk visits at most the nodes the stem will be grown with, so it is bounded by what the limit leaves.
   bool fitsEnvelope(std::uint64_t key, int level, const Transform& base, double length, int firstSegment,
-                    double splitError) const {
+                    double splitError) {
     return walkStem(
         key, level, base, length, firstSegment, splitError,
         [this](const Transform& joint) {
+          if (++walked_ + nodesMade_ > options_.limits.nodes) throw GenerationError(tooManyNodes());
           return wp::insideEnvelope(p_, tree_.treeScale, joint.position.x, joint.position.y, joint.position.z);
         },
         [&](std::uint64_t cloneKey, const Transform& cloneBase, int cloneFirst, double cloneError) {
@@ -180,11 +198,15 @@ class Grower {
   // Weber-Penn pruning: the longest length that fits the envelope, blended with the original by PruneRatio.
   double prunedLength(std::uint64_t key, int level, const Transform& base, double length) {
     if (p_.pruneRatio <= 0.0 || level == 0) return length;
-    if (fitsEnvelope(key, level, base, length, 0, 0.0)) return length;
+    auto fits = [&](double trial) {
+      walked_ = 0;
+      return fitsEnvelope(key, level, base, trial, 0, 0.0);
+    };
+    if (fits(length)) return length;
     double lo = 0.0, hi = length;
-    for (int i = 0; i < kPruneSteps; ++i) {
+    for (int i = 0; i < kPruneSteps; ++i) {  // a fixed number of steps: pruning always ends
       const double mid = 0.5 * (lo + hi);
-      if (fitsEnvelope(key, level, base, mid, 0, 0.0)) lo = mid;
+      if (fits(mid)) lo = mid;
       else hi = mid;
     }
     return length * (1.0 - p_.pruneRatio) + lo * p_.pruneRatio;
@@ -200,7 +222,7 @@ class Grower {
     stem.joints = g.joints;
     stem.endsInSplit = g.split;
     tree_.stems.push_back(std::move(stem));
-    countNodes(g.joints.size() + 1);
+    countNodes(1);  // its base; the joints were counted as they were grown
     for (const Grown& c : g.clones) {
       RawStem cloneProto = proto;
       cloneProto.cloneOf = index;
@@ -347,13 +369,7 @@ class Grower {
         const Transform base{segment.position, segment.rotation * rotationZ(azimuth) * rotationX(angle)};
         const double length = prunedLength(key, level, base, length0);
         const double childRadius = Cs * incoming;
-        // Not grown: a child shorter than twice the parent's radius (it would end inside the parent), a stub
-        // shorter than 25 of its own radii (pruning leaves these), and one thinner than 1/500 of its length
-        // (where a tapering parent runs out of wood: it could not carry itself).
-        if (length < 2.0 * incoming || length < kMinStubness * childRadius || childRadius < 1e-5 * tree_.treeScale ||
-            childRadius * kMaxSlenderness < length) {
-          continue;
-        }
+        if (!wp::childGrows(length, incoming, childRadius, tree_.treeScale)) continue;
 
         RawStem proto;
         proto.level = level;
@@ -433,9 +449,9 @@ class Grower {
       const Transform segment = stem.frameAt(s, z);
       tree_.leaves.push_back(RawLeaf{stemIndex, z, leafRotation(segment.rotation, azimuth, down), leafLength,
                                      leafWidth, p_.leafStemLen * leafLength});
-      if (tree_.leaves.size() > options_.maxLeaves) {
-        throw GenerationError("the tree would have more than " + std::to_string(options_.maxLeaves) +
-                              " leaves; lower Leaves or LeafQuality");
+      if (tree_.leaves.size() > options_.limits.leaves) {
+        throw GenerationError("the tree would have more than " + std::to_string(options_.limits.leaves) +
+                              " leaves; lower Leaves or LeafQuality, or the stems of the deepest level");
       }
     };
 

@@ -4,8 +4,10 @@
 #include <cstdint>
 #include <stdexcept>
 
+#include "common/input_error.hpp"
 #include "raw_tree.hpp"
 #include "skeleton.hpp"
+#include "tree_estimate.hpp"
 #include "species/species.hpp"
 
 namespace arbor {
@@ -13,14 +15,13 @@ namespace arbor {
 struct GrowthOptions {
   std::uint64_t seed = 1;
   int levels = 0;                       // 0: the species' Levels; otherwise 1..8 (extra impostor levels)
-  std::size_t maxNodes = 4'000'000;     // refuse trees beyond this instead of exhausting memory
-  std::size_t maxLeaves = 4'000'000;
+  TreeLimits limits;                    // refuse trees beyond these instead of exhausting memory or time
 };
 
 // A tree that cannot be grown as asked (too large); callers exit with code 2.
-class GenerationError : public std::runtime_error {
+class GenerationError : public LimitError {
  public:
-  using std::runtime_error::runtime_error;
+  using LimitError::LimitError;
 };
 
 // Stage 1: stems, segments, curvature, splits, children, pruning, leaves; undeflected.

@@ -70,6 +70,12 @@ double childCountOfDeeper(double branches, double offset, double parentLength) {
   return branches * (1.0 - 0.5 * offset / parentLength);
 }
 
+bool childGrows(double length, double incomingRadius, double childRadius, double treeScale) {
+  constexpr double kMaxSlenderness = 500.0, kMinStubness = 25.0;
+  return length >= 2.0 * incomingRadius && length >= kMinStubness * childRadius && childRadius >= 1e-5 * treeScale &&
+         childRadius * kMaxSlenderness >= length;
+}
+
 Envelope envelopeOf(const SpeciesParams& p) {
   return Envelope{p.pruneWidth, p.pruneWidthPeak, p.prunePowerLow, p.prunePowerHigh};
 }

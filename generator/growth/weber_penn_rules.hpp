@@ -39,6 +39,11 @@ double childLengthOfTrunk(const SpeciesParams& p, double lengthChildMax, double 
 // Length of a child of a deeper stem: lengthChildMax (parentLength - 0.6 offset).
 double childLengthOfDeeper(double lengthChildMax, double parentLength, double offset);
 
+// Whether a child is grown at all. Not grown: a child shorter than twice the parent's radius (it would end
+// inside the parent), a stub shorter than 25 of its own radii (pruning leaves these), one thinner than 1/500 of
+// its length (where a tapering parent runs out of wood: it could not carry itself), and a hair-thin one.
+bool childGrows(double length, double incomingRadius, double childRadius, double treeScale);
+
 // Leaves on a deepest-level stem at `offset` along its parent: |Leaves| * ShapeRatio(LeafDistrib) * LeafQuality.
 double leafCount(const SpeciesParams& p, double offset, double parentLength);
 

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "common/input_error.hpp"
+#include "common/text_util.hpp"
 #include "connection.hpp"
 #include "cross_section.hpp"
 #include "face_grid.hpp"
@@ -79,6 +81,16 @@ class Builder {
     return opt_.levels <= 0 || sk_.stems[static_cast<std::size_t>(stem)].level < opt_.levels;
   }
 
+  std::string tooManyQuads(double extraRings) const {
+    std::string message = "the mesh would have more than " + std::to_string(opt_.maxQuads) + " quads";
+    if (extraRings > 0.0) message += " (one stem alone asks for " + formatNumber(extraRings) + " extra cross sections)";
+    if (opt_.ringSpacing > 0.0 || opt_.maxRingDistance > 0.0) {
+      return message + "; space cross sections further apart (ring spacing " + formatNumber(opt_.ringSpacing) + " radii, largest ring distance " +
+             formatNumber(opt_.maxRingDistance) + " m) or lower Levels or Branches";
+    }
+    return message + "; lower Levels or Branches, or mesh fewer levels and draw the rest as fake branches";
+  }
+
   // ---- vertices, rings, faces ----
 
   std::uint32_t addVertex(const Vec3& p, double radius, int level, const Vec3& tangent) {
@@ -106,7 +118,8 @@ class Builder {
     r.center = center;
     r.radius = radius;
     r.tex = tex;
-    const int level = sk_.stems[static_cast<std::size_t>(stem)].level;
+    // The hub of several trunks belongs to no stem (-1): it is level 0.
+    const int level = stem >= 0 ? sk_.stems[static_cast<std::size_t>(stem)].level : 0;
     const auto offsets = ringOffsets(frame, radius * opt_.limitCompensation);
     for (int k = 0; k < 4; ++k) {
       r.v[static_cast<std::size_t>(k)] = addVertex(center + offsets[static_cast<std::size_t>(k)], radius, level, frame.T);
@@ -117,6 +130,7 @@ class Builder {
   }
 
   void addQuad(std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d) {
+    if (out_.mesh.quads.size() >= opt_.maxQuads) throw LimitError(tooManyQuads(0.0));
     out_.mesh.quads.push_back({a, b, c, d});
     out_.quadStem.push_back(currentStem_);
   }
@@ -447,7 +461,12 @@ class Builder {
         const double r = std::max({poly.radius(0.5 * (s + previousS)), 0.5 * poly.radius(0.0), poly.length() / 48.0});
         double limit = opt_.ringSpacing > 0.0 ? opt_.ringSpacing * std::max(r, 1e-6) : span;
         if (opt_.maxRingDistance > 0.0) limit = std::min(limit, opt_.maxRingDistance);
-        const int extra = limit > 0.0 ? std::max(0, static_cast<int>(std::ceil(span / limit)) - 1) : 0;
+        // Counted in floating point first: a spacing of 1e-300 radii must be refused, not overflow an int.
+        const double wanted = limit > 0.0 ? std::max(0.0, std::ceil(span / limit) - 1.0) : 0.0;
+        if (4.0 * wanted > static_cast<double>(opt_.maxQuads - std::min(opt_.maxQuads, out_.mesh.quads.size()))) {
+          throw LimitError(tooManyQuads(wanted));
+        }
+        const int extra = static_cast<int>(wanted);
         for (int k = 1; k <= extra; ++k) last = advance(stem, poly, last, previousS + span * k / (extra + 1));
       }
       if (role == -4) {
@@ -657,8 +676,8 @@ class Builder {
 
 TreeMesh buildTreeMesh(const Skeleton& skeleton, const MeshOptions& options) {
   TreeMesh out;
-  // About four cross sections per skeleton node at most; growing these vectors would cost page faults.
-  const std::size_t vertices = skeleton.nodes.size() * 16;
+  // About five quads (and as many vertices) per skeleton node; growing these vectors would cost page faults.
+  const std::size_t vertices = std::min(skeleton.nodes.size() * 6, options.maxQuads + 8);
   out.mesh.positions.reserve(vertices);
   out.mesh.tangents.reserve(vertices);
   out.mesh.radius.reserve(vertices);

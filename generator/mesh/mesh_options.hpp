@@ -1,5 +1,8 @@
 #pragma once
 // Choices the mesh stage leaves to the user (arbor generate --ring-spacing, --open-base, ...).
+#include <cstddef>
+
+#include "growth/tree_estimate.hpp"
 
 namespace arbor {
 
@@ -8,6 +11,7 @@ struct MeshOptions {
   double maxRingDistance = 0.0;   // and in metres (0: no absolute limit); uniform density for displacement
   bool openBase = false;          // leave the ring at the trunk base open (the mesh is otherwise closed)
   int levels = 0;                 // mesh stems of levels < this only (0: all); impostors draw the rest
+  std::size_t maxQuads = TreeLimits{}.quads;  // refused beyond this (LimitError), before memory runs out
   // Control cross sections are enlarged so that the Catmull-Clark limit of a four-vertex ring (between
   // 0.648 and 0.667 of its control radius) has about the skeleton's radius.
   double limitCompensation = 1.0 / 0.657;
