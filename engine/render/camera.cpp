@@ -20,7 +20,15 @@ Bounds meshBounds(const QuadMesh& mesh) {
   return b;
 }
 
-glm::mat4 viewMatrix(const Camera& c) { return glm::lookAt(c.eye, c.target, glm::vec3(0.0f, 0.0f, 1.0f)); }
+glm::vec3 upVector(const Camera& c) {
+  // Looking straight up or down, z cannot be the up vector (lookAt would divide by zero): +y is.
+  const glm::vec3 d = c.target - c.eye;
+  const float length = glm::length(d);
+  if (length > 0.0f && std::abs(d.z) > 0.9999f * length) return {0.0f, 1.0f, 0.0f};
+  return {0.0f, 0.0f, 1.0f};
+}
+
+glm::mat4 viewMatrix(const Camera& c) { return glm::lookAt(c.eye, c.target, upVector(c)); }
 
 glm::mat4 projectionMatrix(const Camera& c, float aspect) {
   glm::mat4 p = glm::perspectiveRH_ZO(c.fovY, aspect, c.nearPlane, c.farPlane);
@@ -33,7 +41,8 @@ Camera frameBounds(const Bounds& b, float azimuthDegrees, float elevationDegrees
   const float radius = std::max(0.5f * glm::length(b.hi - b.lo), 1e-3f);
   const float az = glm::radians(azimuthDegrees), el = glm::radians(elevationDegrees);
   const glm::vec3 back(std::sin(az) * std::cos(el), -std::cos(az) * std::cos(el), std::sin(el));
-  const glm::vec3 right = glm::normalize(glm::cross(-back, glm::vec3(0.0f, 0.0f, 1.0f)));
+  const glm::vec3 right = std::abs(back.z) > 0.9999f ? glm::vec3(1.0f, 0.0f, 0.0f)  // from straight above or below
+                                                      : glm::normalize(glm::cross(-back, glm::vec3(0.0f, 0.0f, 1.0f)));
   const glm::vec3 up = glm::cross(right, -back);
   Camera c;
   c.target = center;
@@ -66,6 +75,11 @@ Camera parseCamera(const std::string& text) {
     } catch (const std::exception&) {
       throw std::invalid_argument("'" + item + "' is not a number");
     }
+    // NaN would cull every tree and an infinity break the projection; a million metres is past any scene.
+    if (!std::isfinite(values.back()) || std::abs(values.back()) > 1e6f) {
+      throw std::invalid_argument("'" + item + "' is not allowed; coordinates are finite numbers within 1e6 m");
+    }
+    if (values.size() > 7) throw std::invalid_argument("expected ex,ey,ez,tx,ty,tz[,fov degrees], got more than 7 numbers");
   }
   if (values.size() != 6 && values.size() != 7) {
     throw std::invalid_argument("expected ex,ey,ez,tx,ty,tz[,fov degrees], got " + std::to_string(values.size()) + " numbers");

@@ -21,6 +21,8 @@ struct Camera {
 };
 
 Bounds meshBounds(const QuadMesh& mesh);
+// +z, or +y when the camera looks straight up or down.
+glm::vec3 upVector(const Camera& camera);
 glm::mat4 viewMatrix(const Camera& camera);
 glm::mat4 projectionMatrix(const Camera& camera, float aspect);
 

@@ -1,39 +1,9 @@
 #include "bench_support.hpp"
 
 #include <algorithm>
-#include <sstream>
 
-#include "species/species_io.hpp"
 
 namespace arbor::cli {
-
-std::vector<std::string> splitList(const std::string& text) {
-  std::vector<std::string> items;
-  std::stringstream in(text);
-  std::string item;
-  while (std::getline(in, item, ',')) {
-    if (!item.empty()) items.push_back(item);
-  }
-  return items;
-}
-
-std::vector<float> parseNumbers(const std::string& text, const std::string& field, float lo, float hi) {
-  std::vector<float> values;
-  for (const std::string& item : splitList(text)) {
-    float v = 0.0f;
-    std::size_t used = 0;
-    try {
-      v = std::stof(item, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (used != item.size() || !(v >= lo && v <= hi)) {
-      throw SpeciesError(item, field, "allowed: comma-separated numbers from " + std::to_string(lo) + " to " + std::to_string(hi));
-    }
-    values.push_back(v);
-  }
-  return values;
-}
 
 namespace {
 

@@ -3,14 +3,10 @@
 #include <string>
 #include <vector>
 
+#include "cli_values.hpp"
 #include "render/render_session.hpp"
 
 namespace arbor::cli {
-
-// "a,b,c" -> {"a", "b", "c"}; empty items are dropped.
-std::vector<std::string> splitList(const std::string& text);
-// Comma-separated numbers, each within [lo, hi]; anything else is a SpeciesError naming `field`.
-std::vector<float> parseNumbers(const std::string& text, const std::string& field, float lo, float hi);
 
 struct Figures {
   double median = 0.0, lo = 0.0, hi = 0.0;

@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "assets.hpp"
+#include "cli_values.hpp"
 #include "commands.hpp"
 #include "growth/weber_penn.hpp"
 #include "mesh/tree_mesh.hpp"
@@ -54,12 +55,13 @@ void addAccuracyCommand(CLI::App& app, Action& action) {
   CLI::App* cmd = app.add_subcommand(
       "accuracy", "Distance of ACC's patches from the exact limit surface (OpenSubdiv), relative to the branch radius.");
   cmd->add_option("species", o->species, "Presets or species files (default: every preset)");
-  cmd->add_option("--seed", o->seed, "Random seed")->capture_default_str();
-  cmd->add_option("--levels", o->levels, "Stem levels (default: each species' Levels)")->check(CLI::Range(1, 8));
+  cmd->add_option("--seed", o->seed, "Random seed")->check(Seed())->capture_default_str();
+  cmd->add_option("--levels", o->levels, "Stem levels (default: each species' Levels)")->check(Whole(1, 8));
   cmd->add_option("--max-patches", o->maxPatches, "Measure every k-th patch so that at most this many are (0: all)")
+      ->check(Whole(0, 100000000))
       ->capture_default_str();
   cmd->add_option("--samples", o->samples, "Samples per patch side, corners included (2, 3 or 5: where the reference is exact)")
-      ->check(CLI::Range(2, 64))
+      ->check(Whole(2, 64))
       ->capture_default_str();
   cmd->callback([o, &action] { action = [o] { return runAccuracy(*o); }; });
 }

@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "assets.hpp"
+#include "cli_values.hpp"
 #include "commands.hpp"
 #include "growth/weber_penn.hpp"
 #include "mesh/tree_mesh.hpp"
@@ -97,18 +98,18 @@ void addBenchCommand(CLI::App& app, Action& action) {
   CLI::App* gen = bench->add_subcommand("generate", "Time skeleton generation per preset (one thread).");
   gen->add_option("species", o->species, "Presets or species files (default: every preset)");
   gen->add_option("--repeat", o->repeat, "Runs per species; the median and minimum are printed")
-      ->check(CLI::Range(1, 1000))
+      ->check(Whole(1, 1000))
       ->capture_default_str();
-  gen->add_option("--seed", o->seed, "Random seed")->capture_default_str();
-  gen->add_option("--levels", o->levels, "Stem levels (default: each species' Levels)")->check(CLI::Range(1, 8));
+  gen->add_option("--seed", o->seed, "Random seed")->check(Seed())->capture_default_str();
+  gen->add_option("--levels", o->levels, "Stem levels (default: each species' Levels)")->check(Whole(1, 8));
   gen->callback([o, &action] { action = [o] { return runBenchGenerate(*o); }; });
 
   auto m = std::make_shared<BenchOptions>();
   CLI::App* mesh = bench->add_subcommand("mesh", "Time parameters -> skeleton -> mesh -> patches per preset (one thread).");
   mesh->add_option("species", m->species, "Presets or species files (default: every preset)");
-  mesh->add_option("--repeat", m->repeat, "Runs per species; medians are printed")->check(CLI::Range(1, 1000))->capture_default_str();
-  mesh->add_option("--seed", m->seed, "Random seed")->capture_default_str();
-  mesh->add_option("--levels", m->levels, "Stem levels (default: each species' Levels)")->check(CLI::Range(1, 8));
+  mesh->add_option("--repeat", m->repeat, "Runs per species; medians are printed")->check(Whole(1, 1000))->capture_default_str();
+  mesh->add_option("--seed", m->seed, "Random seed")->check(Seed())->capture_default_str();
+  mesh->add_option("--levels", m->levels, "Stem levels (default: each species' Levels)")->check(Whole(1, 8));
   mesh->callback([m, &action] { action = [m] { return runBenchMesh(*m); }; });
 
   addBenchTessCommand(*bench, action);

@@ -3,12 +3,15 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <sstream>
 #include <fstream>
 #include <memory>
 
 #include "assets.hpp"
 #include "bench_support.hpp"
+#include "cli_values.hpp"
 #include "commands.hpp"
+#include "common/atomic_file.hpp"
 #include "growth/weber_penn.hpp"
 #include "mesh/tree_mesh.hpp"
 #include "render_options.hpp"
@@ -43,12 +46,10 @@ int runBenchLeaves(const BenchLeavesOptions& o) {
   base.mode = parseMode(o.mode, "--mode");
   base.tessLevel = o.tess;
   base.leaves = true;
-  std::ofstream csv;
-  if (!o.csv.empty()) {
-    csv.open(o.csv);
-    if (!csv) throw std::runtime_error(o.csv + ": cannot open for writing");
-    csv << "leaves,shadow_leaves,triangles,cpu_ms_median,cpu_ms_min,cpu_ms_max,gpu_ms_median,gpu_ms_min,gpu_ms_max,fps\n";
-  }
+  if (!o.csv.empty()) requireOutputFile(o.csv, "--csv");
+  // Rows are collected and the file written whole at the end: a refused or interrupted run leaves an old CSV alone.
+  std::ostringstream csv;
+  csv << "leaves,shadow_leaves,triangles,cpu_ms_median,cpu_ms_min,cpu_ms_max,gpu_ms_median,gpu_ms_min,gpu_ms_max,fps\n";
 
   // The mesh keeps the species' levels; more levels are grown (the same tree below, breadth-first) until the
   // deepest carries enough leaves for the largest count.
@@ -58,13 +59,27 @@ int runBenchLeaves(const BenchLeavesOptions& o) {
   growth.seed = o.seed;
   growth.levels = params.levels;
   Skeleton skeleton = generateSkeleton(params, growth);
+  // Deeper levels are not always leafier (children that run out of wood are not grown): keep the leafiest.
+  int leafiestLevels = growth.levels;
   while (skeleton.leaves.size() < most && growth.levels < 8) {
     std::fprintf(stderr, "arbor bench leaves: %zu leaves at %d levels; growing one more\n", skeleton.leaves.size(), growth.levels);
     ++growth.levels;
-    skeleton = generateSkeleton(params, growth);
+    Skeleton deeper;
+    try {
+      deeper = generateSkeleton(params, growth);
+    } catch (const GenerationError& e) {
+      std::fprintf(stderr, "arbor bench leaves: not at %d levels: %s\n", growth.levels, e.what());
+      break;
+    }
+    if (deeper.leaves.size() > skeleton.leaves.size()) {
+      skeleton = std::move(deeper);
+      leafiestLevels = growth.levels;
+    }
   }
+  growth.levels = leafiestLevels;
   if (skeleton.leaves.size() < most) {
-    throw SpeciesError(std::to_string(most), "--counts", o.species + " grows at most " + std::to_string(skeleton.leaves.size()) + " leaves");
+    throw SpeciesError(std::to_string(most), "--counts", o.species + " grows at most " + std::to_string(skeleton.leaves.size()) +
+                                                           " leaves (at " + std::to_string(leafiestLevels) + " levels); give counts up to that");
   }
   MeshOptions meshOptions;
   meshOptions.levels = params.levels;
@@ -103,7 +118,7 @@ int runBenchLeaves(const BenchLeavesOptions& o) {
     else std::printf("- | ");
     std::printf("%.1f |\n", fps);
     std::fflush(stdout);
-    if (csv) {
+    {
       csv << count << ',' << shadowLeaves << ',' << t.last.gpu.triangles << ',' << t.cpu.median << ',' << t.cpu.lo << ',' << t.cpu.hi << ','
           << t.gpu.median << ',' << t.gpu.lo << ',' << t.gpu.hi << ',' << fps << '\n';
     }
@@ -114,7 +129,10 @@ int runBenchLeaves(const BenchLeavesOptions& o) {
   }
   if (hostTimed) std::printf("\n* lavapipe: GPU timestamps miss its deferred rasterisation; frames/s use the CPU frame time.\n");
   if (reportValidationErrors(context)) return kExitFailure;
-  if (!o.csv.empty()) std::printf("wrote %s\n", o.csv.c_str());
+  if (!o.csv.empty()) {
+    writeFileAtomically(o.csv, csv.str());
+    std::printf("wrote %s\n", o.csv.c_str());
+  }
   return 0;
 }
 
@@ -124,13 +142,13 @@ void addBenchLeavesCommand(CLI::App& bench, Action& action) {
   auto o = std::make_shared<BenchLeavesOptions>();
   CLI::App* cmd = bench.add_subcommand("leaves", "Frame time against leaves drawn, with and without self-shadowing (Vulkan).");
   cmd->add_option("species", o->species, "Preset or species file (grown to more levels until it has enough leaves)")->capture_default_str();
-  cmd->add_option("--seed", o->seed, "Random seed")->capture_default_str();
+  cmd->add_option("--seed", o->seed, "Random seed")->check(Seed())->capture_default_str();
   cmd->add_option("--counts", o->counts, "Leaves drawn per row, comma-separated (the first of the random order)")->capture_default_str();
   cmd->add_option("--shadow-leaves", o->shadows, "Self-shadowing settings per count, comma-separated, 0 to 4096 (0: off)")->capture_default_str();
   cmd->add_option("--mode", o->mode, "How the tree is drawn: flat, pn, acc")->capture_default_str();
-  cmd->add_option("--tess", o->tess, "Tessellation factor of the tree")->check(CLI::Range(1.0, 64.0))->capture_default_str();
+  cmd->add_option("--tess", o->tess, "Tessellation factor of the tree")->check(Number(1.0, 64.0))->capture_default_str();
   cmd->add_option("--size", o->size, "Image size WIDTHxHEIGHT")->capture_default_str();
-  cmd->add_option("--frames", o->frames, "Timed frames per row, after one warm-up")->check(CLI::Range(1, 10000))->capture_default_str();
+  cmd->add_option("--frames", o->frames, "Timed frames per row, after one warm-up")->check(Whole(1, 10000))->capture_default_str();
   cmd->add_option("--device", o->device, "Prefer the Vulkan device whose name contains this");
   cmd->add_flag("--validation", o->validation, "Enable the Khronos validation layer (also ARBOR_VALIDATION=1)");
   cmd->add_option("--csv", o->csv, "Also write the figures as CSV");

@@ -11,7 +11,9 @@
 
 #include "assets.hpp"
 #include "bench_support.hpp"
+#include "cli_values.hpp"
 #include "commands.hpp"
+#include "common/atomic_file.hpp"
 #include "export/subdivide.hpp"
 #include "growth/weber_penn.hpp"
 #include "image/plot.hpp"
@@ -52,7 +54,7 @@ std::vector<Cell> makeCells(const BenchTessOptions& o) {
   const std::vector<float> factors = parseNumbers(o.factors, "--factors", 1.0f, 64.0f);
   const std::vector<float> targets = parseNumbers(o.adaptive, "--adaptive", 0.5f, 1000.0f);
   std::vector<Cell> cells;
-  for (const std::string& name : splitList(o.modes)) {
+  for (const std::string& name : splitList(o.modes, "--modes")) {
     const bool displaced = name == "acc+disp" || name == "pn+disp";
     Cell base;
     base.settings.mode = parseMode(displaced ? name.substr(0, name.size() - 5) : name, "--modes");
@@ -118,13 +120,12 @@ int runBenchTess(const BenchTessOptions& o) {
     if (n.size() != 1) throw SpeciesError(o.scene[1], "--scene", "forest takes one tree count, 1 to 1000");
     forestTrees = static_cast<std::uint32_t>(n.front());
   }
-  std::ofstream csv;
-  if (!o.csv.empty()) {
-    csv.open(o.csv);
-    if (!csv) throw std::runtime_error(o.csv + ": cannot open for writing");
-    csv << "mode,factor,adaptive_px,displacement,triangles,cpu_ms_median,cpu_ms_min,cpu_ms_max,gpu_ms_median,gpu_ms_min,"
-           "gpu_ms_max,mtriangles_per_s,share_of_ceiling,gpu_bytes\n";
-  }
+  if (!o.csv.empty()) requireOutputFile(o.csv, "--csv");
+  if (!o.plot.empty()) requireOutputFile(o.plot, "--plot");
+  // Rows are collected and the file written whole at the end: a refused or interrupted run leaves an old CSV alone.
+  std::ostringstream csv;
+  csv << "mode,factor,adaptive_px,displacement,triangles,cpu_ms_median,cpu_ms_min,cpu_ms_max,gpu_ms_median,gpu_ms_min,"
+         "gpu_ms_max,mtriangles_per_s,share_of_ceiling,gpu_bytes\n";
 
   const SpeciesParams params = loadSpeciesArgument(o.species);
   vk::VulkanContext context(vulkanOptions(o.validation, o.device));
@@ -232,7 +233,7 @@ int runBenchTess(const BenchTessOptions& o) {
     else std::printf("%.3f (%.3f-%.3f)%s | ", m->timed.gpu.median, m->timed.gpu.lo, m->timed.gpu.hi, hostTimed ? " *" : "");
     std::printf("%.2f | %s | %.1f |\n", m->rate, o.noCeiling ? "-" : (std::to_string(static_cast<int>(std::lround(100.0 * shareOfCeiling(*m)))) + " %").c_str(),
                 mib(scene.bytes));
-    if (csv) {
+    {
       csv << m->mode << ',' << m->factor << ',' << m->adaptive << ',' << m->displacement << ',' << m->triangles << ',' << m->timed.cpu.median
           << ',' << m->timed.cpu.lo << ',' << m->timed.cpu.hi << ',' << m->timed.gpu.median << ',' << m->timed.gpu.lo << ',' << m->timed.gpu.hi
           << ',' << m->rate << ',' << (o.noCeiling ? 0.0 : shareOfCeiling(*m)) << ',' << scene.bytes << '\n';
@@ -282,7 +283,7 @@ int runBenchTess(const BenchTessOptions& o) {
       m.timed = timed;
       m.seconds = frameMs * 1e-3;
       m.rate = m.seconds > 0.0 ? static_cast<double>(m.triangles) / m.seconds * 1e-6 : 0.0;
-      if (csv) {
+      {
         csv << "cpu-subdivided," << factor << ",0,0," << m.triangles << ',' << timed.cpu.median << ',' << timed.cpu.lo << ',' << timed.cpu.hi << ','
             << timed.gpu.median << ',' << timed.gpu.lo << ',' << timed.gpu.hi << ',' << m.rate << ",0," << bytes << '\n';
       }
@@ -317,7 +318,10 @@ int runBenchTess(const BenchTessOptions& o) {
     std::printf("\n* lavapipe: GPU timestamps miss its deferred rasterisation; rates and shares use the CPU frame time.\n");
   }
   if (reportValidationErrors(context)) return kExitFailure;
-  if (!o.csv.empty()) std::printf("wrote %s\n", o.csv.c_str());
+  if (!o.csv.empty()) {
+    writeFileAtomically(o.csv, csv.str());
+    std::printf("wrote %s\n", o.csv.c_str());
+  }
   if (!o.plot.empty()) std::printf("wrote %s\n", o.plot.c_str());
   return 0;
 }
@@ -328,13 +332,13 @@ void addBenchTessCommand(CLI::App& bench, Action& action) {
   auto o = std::make_shared<BenchTessOptions>();
   CLI::App* cmd = bench.add_subcommand("tess", "Frame time and triangles generated per mode and tessellation factor (Vulkan).");
   cmd->add_option("species", o->species, "Preset or species file")->capture_default_str();
-  cmd->add_option("--seed", o->seed, "Random seed")->capture_default_str();
-  cmd->add_option("--levels", o->levels, "Stem levels (default: the species' Levels)")->check(CLI::Range(1, 8));
+  cmd->add_option("--seed", o->seed, "Random seed")->check(Seed())->capture_default_str();
+  cmd->add_option("--levels", o->levels, "Stem levels (default: the species' Levels)")->check(Whole(1, 8));
   cmd->add_option("--modes", o->modes, "Comma-separated: flat, pn, acc, acc+disp, pn+disp")->capture_default_str();
   cmd->add_option("--factors", o->factors, "Uniform tessellation factors, 1 to 64 (empty: none)")->capture_default_str();
   cmd->add_option("--adaptive", o->adaptive, "Adaptive targets: edge lengths in pixels, 0.5 to 1000");
   cmd->add_option("--size", o->size, "Image size WIDTHxHEIGHT")->capture_default_str();
-  cmd->add_option("--frames", o->frames, "Timed frames per cell, after one warm-up")->check(CLI::Range(1, 10000))->capture_default_str();
+  cmd->add_option("--frames", o->frames, "Timed frames per cell, after one warm-up")->check(Whole(1, 10000))->capture_default_str();
   cmd->add_option("--device", o->device, "Prefer the Vulkan device whose name contains this");
   cmd->add_flag("--validation", o->validation, "Enable the Khronos validation layer (also ARBOR_VALIDATION=1)");
   cmd->add_option("--csv", o->csv, "Also write the figures as CSV");
@@ -342,7 +346,7 @@ void addBenchTessCommand(CLI::App& bench, Action& action) {
   cmd->add_option("--scene", o->scene, "tree (default) or forest N (N instanced trees, 1 to 1000, default 30)")->expected(1, 2);
   cmd->add_flag("--no-ceiling", o->noCeiling, "Skip the ceiling cells (ACC's patches with trivial shaders)");
   cmd->add_option("--subdivide-up-to", o->subdivideUpTo, "Compare with OpenSubdiv on the CPU up to this ACC factor, a power of two (0: skip)")
-      ->check(CLI::Range(0, 64))
+      ->check(Whole(0, 64))
       ->capture_default_str();
   cmd->callback([o, &action] { action = [o] { return runBenchTess(*o); }; });
 }

@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "assets.hpp"
+#include "cli_values.hpp"
 #include "commands.hpp"
 #include "common/atomic_file.hpp"
 #include "common/text_util.hpp"
@@ -58,6 +59,7 @@ void printNotes(const std::string& species, const ImportNotes& notes) {
 
 int runGenerate(const GenerateOptions& o) {
   const OutputType type = outputType(o.out);
+  requireOutputFile(o.out);
   if (type == OutputType::Skeleton && (o.subdivide > 0 || o.triangles)) {
     throw SpeciesError(o.out, "--out", "--subdivide and --triangles apply to meshes (.obj, .gltf, .glb), not to a skeleton");
   }
@@ -85,10 +87,9 @@ int runGenerate(const GenerateOptions& o) {
     if (type == OutputType::Obj) content = writeObj(exported, o.triangles);
     if (type == OutputType::Gltf) content = writeGltf(exported, params.name);
     if (type == OutputType::Glb) content = writeGlb(exported, params.name);
-  } else {
-    content = writeSkeletonJson(skeleton);
   }
-  writeFileAtomically(o.out, content);
+  if (type == OutputType::Skeleton) writeFileAtomically(o.out, [&](std::ostream& out) { writeSkeletonJson(skeleton, out); });
+  else writeFileAtomically(o.out, content);
   if (o.quiet) return 0;
 
   const SkeletonStats stats = skeletonStats(skeleton);
@@ -136,27 +137,27 @@ void addGenerateCommand(CLI::App& app, Action& action) {
   CLI::App* cmd = app.add_subcommand("generate", "Grow a tree from a preset or species file and write its skeleton or mesh.");
   cmd->add_option("species", o->species, "Preset name (see 'arbor species --list') or a .json/.xml species file")
       ->required();
-  cmd->add_option("--seed", o->seed, "Random seed; the same seed gives byte-identical output")->capture_default_str();
+  cmd->add_option("--seed", o->seed, "Random seed; the same seed gives byte-identical output")->check(Seed())->capture_default_str();
   cmd->add_option("--levels", o->levels, "Stem levels to grow (default: the species' Levels)")
-      ->check(CLI::Range(1, 8));
+      ->check(Whole(1, 8));
   cmd->add_option("--out", o->out,
                   "Output file: .json writes the skeleton; .obj (quads), .gltf or .glb (triangles, with _RADIUS, "
                   "_LEVEL and _FLIP attributes) write the mesh")
       ->required();
   cmd->add_option("--ring-spacing", o->mesh.ringSpacing,
                   "Extra cross sections wherever rings are farther apart than this many local radii (0: off)")
-      ->check(CLI::Range(0.0, 1000.0))
+      ->check(OffOrNumber(0.01, 1000.0))
       ->capture_default_str();
   cmd->add_option("--max-ring-distance", o->mesh.maxRingDistance,
                   "Extra cross sections wherever rings are farther apart than this many metres (0: off)")
-      ->check(CLI::Range(0.0, 1000.0))
+      ->check(OffOrNumber(0.0001, 1000.0))
       ->capture_default_str();
   cmd->add_option("--mesh-levels", o->mesh.levels, "Mesh only stems of levels below this (0: all)")
-      ->check(CLI::Range(0, 8));
+      ->check(Whole(0, 8));
   cmd->add_flag("--open-base", o->mesh.openBase, "Leave the ring at the trunk base open (closed by default)");
   cmd->add_flag("--triangles", o->triangles, "Write triangles instead of quads to .obj");
   cmd->add_option("--subdivide", o->subdivide, "Export the mesh after N Catmull-Clark levels (OpenSubdiv)")
-      ->check(CLI::Range(0, 6));
+      ->check(Whole(0, 6));
   cmd->add_flag("--quiet", o->quiet, "Print nothing on success");
   cmd->callback([o, &action] { action = [o] { return runGenerate(*o); }; });
 }

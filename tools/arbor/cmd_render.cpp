@@ -8,6 +8,7 @@
 #include <string>
 
 #include "assets.hpp"
+#include "cli_values.hpp"
 #include "commands.hpp"
 #include "common/text_util.hpp"
 #include "growth/weber_penn.hpp"
@@ -68,6 +69,7 @@ int runRender(const RenderOptions& o) {
   std::uint32_t width = 0, height = 0;
   parseSize(o.size, width, height);
   if (!endsWith(o.out, ".png")) throw SpeciesError(o.out, "--out", "the picture is written as PNG; use a .png name");
+  requireOutputFile(o.out);
 
   const SpeciesParams params = loadSpeciesArgument(o.species);
   // The mesh keeps --levels (or the species'); impostor levels grow beyond them (breadth-first: the same tree
@@ -152,35 +154,35 @@ void addRenderCommand(CLI::App& app, Action& action) {
   auto o = std::make_shared<RenderOptions>();
   CLI::App* cmd = app.add_subcommand("render", "Render a tree offscreen with GPU tessellation (Vulkan) to a PNG.");
   cmd->add_option("species", o->species, "Preset name or .json/.xml species file")->required();
-  cmd->add_option("--seed", o->seed, "Random seed")->capture_default_str();
-  cmd->add_option("--levels", o->levels, "Stem levels to grow and mesh (default: the species' Levels)")->check(CLI::Range(1, 8));
+  cmd->add_option("--seed", o->seed, "Random seed")->check(Seed())->capture_default_str();
+  cmd->add_option("--levels", o->levels, "Stem levels to grow and mesh (default: the species' Levels)")->check(Whole(1, 8));
   cmd->add_option("--mode", o->mode, "flat (coarse mesh), pn (PN-triangles), acc (Catmull-Clark approximation)")
       ->capture_default_str();
-  cmd->add_option("--tess", o->tess, "Uniform tessellation factor")->check(CLI::Range(1.0, 64.0))->capture_default_str();
+  cmd->add_option("--tess", o->tess, "Uniform tessellation factor")->check(Number(1.0, 64.0))->capture_default_str();
   cmd->add_option("--adaptive", o->adaptive, "Adaptive tessellation: target edge length in pixels (overrides --tess)")
-      ->check(CLI::Range(0.5, 1000.0));
-  cmd->add_option("--displace", o->displace, "Displacement scale s in (d - b) r s (0: off)")->check(CLI::Range(-10.0, 10.0));
+      ->check(Number(0.5, 1000.0));
+  cmd->add_option("--displace", o->displace, "Displacement scale s in (d - b) r s (0: off)")->check(Number(-10.0, 10.0));
   cmd->add_option("--size", o->size, "Image size WIDTHxHEIGHT")->capture_default_str();
   cmd->add_option("--camera", o->camera, "Camera as ex,ey,ez,tx,ty,tz[,fov degrees] (default: framed on the tree)");
-  cmd->add_option("--azimuth", o->azimuth, "Framing camera azimuth in degrees")->capture_default_str();
-  cmd->add_option("--elevation", o->elevation, "Framing camera elevation in degrees")->check(CLI::Range(-89.0, 89.0))->capture_default_str();
+  cmd->add_option("--azimuth", o->azimuth, "Framing camera azimuth in degrees")->check(Number(-3600.0, 3600.0))->capture_default_str();
+  cmd->add_option("--elevation", o->elevation, "Framing camera elevation in degrees")->check(Number(-89.0, 89.0))->capture_default_str();
   cmd->add_option("--msaa", o->msaa, "Samples per pixel (1, 2, 4, 8)")->check(CLI::IsMember({1, 2, 4, 8}))->capture_default_str();
-  cmd->add_option("--frames", o->frames, "Frames to render; timings are medians after the first")->check(CLI::Range(1, 10000))->capture_default_str();
+  cmd->add_option("--frames", o->frames, "Frames to render; timings are medians after the first")->check(Whole(1, 10000))->capture_default_str();
   cmd->add_option("--device", o->device, "Prefer the Vulkan device whose name contains this");
   cmd->add_flag("--validation", o->validation, "Enable the Khronos validation layer (also ARBOR_VALIDATION=1); errors fail the run");
   cmd->add_flag("--wireframe", o->wireframe, "Outline the tessellated triangles");
   cmd->add_flag("--no-ground", o->noGround, "Leave out the ground");
   cmd->add_flag("--leaves", o->leaves, "Draw the leaves (textured quads from the leaf atlas, back-lit, self-shadowed)");
-  cmd->add_option("--leaf-density", o->leafDensity, "Share of the leaves drawn, 0 to 1")->check(CLI::Range(0.0f, 1.0f))->capture_default_str();
+  cmd->add_option("--leaf-density", o->leafDensity, "Share of the leaves drawn, 0 to 1")->check(Number(0.0f, 1.0f))->capture_default_str();
   cmd->add_option("--leaf-lod", o->leafLod, "All leaves up to this distance in metres, then fewer with distance squared (0: all)")
-      ->check(CLI::Range(0.0f, 10000.0f))
+      ->check(Number(0.0f, 10000.0f))
       ->capture_default_str();
   cmd->add_option("--shadow-leaves", o->shadowLeaves, "Self-shadowing: each leaf tests this many others (0: off)")
-      ->check(CLI::Range(0, 4096))
+      ->check(Whole(0, 4096))
       ->capture_default_str();
   cmd->add_flag("--impostors", o->impostors, "Grow --impostor-levels more levels and draw them as fake branches (textured, view-facing)");
   cmd->add_option("--impostor-levels", o->impostorLevels, "Levels beyond the mesh drawn as fake branches; they carry the leaves (implies --impostors; default 1)")
-      ->check(CLI::Range(1, 3));
+      ->check(Whole(1, 3));
   cmd->add_option("--light", o->light, "Sun direction as AZIMUTH,ELEVATION in degrees (azimuth 0: from -y, the default camera's side)");
   cmd->add_option("--out", o->out, "Output PNG")->required();
   cmd->add_flag("--quiet", o->quiet, "Print nothing on success");

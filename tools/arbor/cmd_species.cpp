@@ -3,6 +3,7 @@
 #include <memory>
 
 #include "assets.hpp"
+#include "cli_values.hpp"
 #include "commands.hpp"
 #include "common/atomic_file.hpp"
 #include "species/species_io.hpp"
@@ -16,6 +17,7 @@ struct SpeciesOptions {
   std::string out;
   bool list = false;
   bool formatDoc = false;
+  std::string random;  // a seed: a random species within the documented ranges
 };
 
 int runSpecies(const SpeciesOptions& o) {
@@ -23,13 +25,15 @@ int runSpecies(const SpeciesOptions& o) {
     std::fputs(speciesFormatMarkdown().c_str(), stdout);
     return 0;
   }
-  if (o.list || o.species.empty()) {
+  if (o.random.empty() && (o.list || o.species.empty())) {
     std::printf("presets in %s/presets:\n", assetDirectory().c_str());
     for (const std::string& name : presetNames()) std::printf("  %s\n", name.c_str());
     return 0;
   }
+  if (!o.random.empty() && !o.species.empty()) throw SpeciesError(o.species, "--random", "give either a species or --random SEED, not both");
+  if (!o.out.empty()) requireOutputFile(o.out);
   ImportNotes notes;
-  const SpeciesParams params = loadSpeciesArgument(o.species, &notes);
+  const SpeciesParams params = o.random.empty() ? loadSpeciesArgument(o.species, &notes) : randomSpecies(std::stoull(o.random));
   const std::string json = writeSpeciesJson(params);
   if (o.out.empty()) {
     std::fputs(json.c_str(), stdout);
@@ -49,6 +53,8 @@ void addSpeciesCommand(CLI::App& app, Action& action) {
   cmd->add_option("species", o->species, "Preset name or .json/.xml species file (omit to list presets)");
   cmd->add_option("--out", o->out, "Write the species as Arbor JSON to this file instead of printing it");
   cmd->add_flag("--list", o->list, "List the presets");
+  cmd->add_option("--random", o->random, "Write a random species: every field drawn evenly from its documented range (stress tests)")
+      ->check(Seed());
   cmd->add_flag("--format-doc", o->formatDoc, "Print the species format documentation (Markdown)");
   cmd->callback([o, &action] { action = [o] { return runSpecies(*o); }; });
 }

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <memory>
 
+#include "cli_values.hpp"
 #include "commands.hpp"
 #include "image/bark_texture.hpp"
 #include "image/leaf_atlas.hpp"
@@ -30,6 +31,7 @@ int runTextures(const TexturesOptions& o) {
                        std::to_string(o.size) + " is not allowed; allowed: a power of two from " +
                            std::to_string(kMinSize) + " to " + std::to_string(kMaxSize));
   }
+  requireOutputFolder(o.out);
   namespace fs = std::filesystem;
   const fs::path dir(o.out);
   std::error_code error;
@@ -59,7 +61,7 @@ void addTexturesCommand(CLI::App& app, Action& action) {
   auto o = std::make_shared<TexturesOptions>();
   CLI::App* cmd = app.add_subcommand("textures", "Write the procedural textures: bark colour and height maps (tileable) and the leaf atlas (PNG).");
   cmd->add_option("--size", o->size, "Width and height in pixels: a power of two from 64 to 4096")->capture_default_str();
-  cmd->add_option("--seed", o->seed, "Random seed; the same size and seed give byte-identical files")->capture_default_str();
+  cmd->add_option("--seed", o->seed, "Random seed; the same size and seed give byte-identical files")->check(Whole(0, 4294967295LL))->capture_default_str();
   cmd->add_option("--out", o->out, "Directory for bark_color.png, bark_height.png and leaf_atlas.png (created if missing)")->required();
   cmd->callback([o, &action] { action = [o] { return runTextures(*o); }; });
 }

@@ -11,12 +11,14 @@
 
 #include "assets.hpp"
 #include "bench_support.hpp"
+#include "cli_values.hpp"
 #include "commands.hpp"
 #include "image/png_io.hpp"
 #include "render/forest.hpp"
 #include "render/render_session.hpp"
 #include "render_options.hpp"
 #include "view_camera.hpp"
+#include "view_script.hpp"
 #include "view_panel.hpp"
 #include "window/overlay.hpp"
 #include "window/swapchain.hpp"
@@ -78,32 +80,6 @@ std::string screenshotName(const std::string& dir, int frame) {
   char name[32];
   std::snprintf(name, sizeof name, "frame-%04d.png", frame);
   return (fs::path(dir) / name).string();
-}
-
-struct WindowEvent {
-  int frame = 0;
-  std::string action;  // resize, minimise, restore, fullscreen, regenerate
-  int width = 0, height = 0;
-};
-
-std::vector<WindowEvent> parseEvents(const std::string& text) {
-  std::vector<WindowEvent> events;
-  for (const std::string& item : splitList(text)) {
-    WindowEvent e;
-    char action[16] = {};
-    int used = 0;
-    const bool resize = std::sscanf(item.c_str(), "%d:resize=%dx%d%n", &e.frame, &e.width, &e.height, &used) == 3 &&
-                        used == static_cast<int>(item.size());
-    if (resize) e.action = "resize";
-    else if (std::sscanf(item.c_str(), "%d:%15[a-z]%n", &e.frame, action, &used) == 2 && used == static_cast<int>(item.size())) e.action = action;
-    const bool known = e.action == "resize" || e.action == "minimise" || e.action == "restore" || e.action == "fullscreen" ||
-                       e.action == "regenerate";
-    if (!known || e.frame < 1 || (resize && (e.width < 1 || e.height < 1 || e.width > 8192 || e.height > 8192))) {
-      throw SpeciesError(item, "--events", "expected FRAME:resize=WxH, FRAME:minimise, FRAME:restore, FRAME:fullscreen or FRAME:regenerate, frames from 1");
-    }
-    events.push_back(e);
-  }
-  return events;
 }
 
 std::string describe(const render::ForestFrame& f) {
@@ -297,9 +273,15 @@ int runWindow(const ViewOptions& o, ViewPlan& plan, ViewState& state) {
       state.frameIndex = (state.frameIndex + 1) % state.frameTimes.size();
       if (screenshot) {
         const std::string name = screenshotName(o.out, scripted ? f + 1 : ++screenshotCount);
-        fs::create_directories(o.out);
-        writePng(name, swapchain.screenshot());
-        std::printf("wrote %s\n", name.c_str());
+        try {
+          fs::create_directories(o.out);
+          writePng(name, swapchain.screenshot());
+          std::printf("wrote %s\n", name.c_str());
+        } catch (const std::exception& e) {
+          if (scripted) throw;
+          std::fprintf(stderr, "arbor view: the screenshot was not written: %s\n", e.what());  // the walk goes on
+        }
+        std::fflush(stdout);
       }
       if (scripted) {
         std::fprintf(stderr, "arbor view: frame %d/%d: %s, %llu triangles\n", f + 1, frames, describe(visible).c_str(),
@@ -355,9 +337,11 @@ int runView(const ViewOptions& o) {
   if (!o.cameraPath.empty()) plan.path = readCameraPath(o.cameraPath);
   // Scripted: a camera path or a frame count; without a display the scene goes to PNG files instead.
   const bool scripted = !o.cameraPath.empty() || o.frames > 0;
+  const bool offscreen = o.offscreen || !window::displayAvailable();
+  if (scripted || offscreen) requireOutputFolder(o.out);
   plan.frames = o.frames > 0 ? o.frames : (scripted ? 60 : 0);
   plan.every = o.screenshotEvery > 0 ? o.screenshotEvery : std::max(1, plan.frames);
-  if (o.offscreen || !window::displayAvailable()) return runOffscreen(o, plan, state);
+  if (offscreen) return runOffscreen(o, plan, state);
   return runWindow(o, plan, state);
 }
 
@@ -367,27 +351,27 @@ void addViewCommand(CLI::App& app, Action& action) {
   auto o = std::make_shared<ViewOptions>();
   CLI::App* cmd = app.add_subcommand("view", "Walk through a generated forest in a window (Vulkan); offscreen PNGs where no display is.");
   cmd->add_option("species", o->species, "Presets or species files (default: black-tupelo)");
-  cmd->add_option("--forest", o->forest, "Trees to place (1: one tree, orbit camera)")->check(CLI::Range(1, 5000))->capture_default_str();
-  cmd->add_option("--seeds", o->seeds, "Distinct seeds per species (each grown once, then instanced)")->check(CLI::Range(1, 16))->capture_default_str();
-  cmd->add_option("--seed", o->seed, "First seed; also places the trees")->capture_default_str();
+  cmd->add_option("--forest", o->forest, "Trees to place (1: one tree, orbit camera)")->check(Whole(1, 5000))->capture_default_str();
+  cmd->add_option("--seeds", o->seeds, "Distinct seeds per species (each grown once, then instanced)")->check(Whole(1, 16))->capture_default_str();
+  cmd->add_option("--seed", o->seed, "First seed; also places the trees")->check(Seed())->capture_default_str();
   cmd->add_option("--size", o->size, "Window (or picture) size WIDTHxHEIGHT")->capture_default_str();
   cmd->add_flag("--no-vsync", o->noVsync, "Present without waiting for vertical blank (mailbox or immediate)");
   cmd->add_flag("--fullscreen", o->fullscreen, "Start fullscreen (F11 toggles)");
   cmd->add_flag("--orbit", o->orbit, "Start with the orbit camera (Tab toggles)");
   cmd->add_option("--mode", o->mode, "flat, pn, acc")->capture_default_str();
-  cmd->add_option("--tess", o->tess, "Uniform tessellation factor (default: adaptive)")->check(CLI::Range(1.0, 64.0));
-  cmd->add_option("--adaptive", o->adaptive, "Adaptive tessellation: target edge length in pixels")->check(CLI::Range(0.5, 1000.0))->capture_default_str();
+  cmd->add_option("--tess", o->tess, "Uniform tessellation factor (default: adaptive)")->check(Number(1.0, 64.0));
+  cmd->add_option("--adaptive", o->adaptive, "Adaptive tessellation: target edge length in pixels")->check(Number(0.5, 1000.0))->capture_default_str();
   cmd->add_option("--max-tess", o->maxTess, "Largest adaptive factor (default 64; lavapipe: 16, it splits draws by the largest)")
-      ->check(CLI::Range(1.0, 64.0));
-  cmd->add_option("--displace", o->displace, "Displacement scale")->check(CLI::Range(-10.0, 10.0));
+      ->check(Number(1.0, 64.0));
+  cmd->add_option("--displace", o->displace, "Displacement scale")->check(Number(-10.0, 10.0));
   cmd->add_flag("--no-leaves", o->noLeaves, "Leave the leaves out");
-  cmd->add_option("--leaf-lod", o->leafLod, "All leaves up to this distance (m), then thinning (0: all)")->check(CLI::Range(0.0, 10000.0))->capture_default_str();
-  cmd->add_option("--shadow-leaves", o->shadowLeaves, "Leaf self-shadowing against this many leaves")->check(CLI::Range(0, 4096))->capture_default_str();
+  cmd->add_option("--leaf-lod", o->leafLod, "All leaves up to this distance (m), then thinning (0: all)")->check(Number(0.0, 10000.0))->capture_default_str();
+  cmd->add_option("--shadow-leaves", o->shadowLeaves, "Leaf self-shadowing against this many leaves")->check(Whole(0, 4096))->capture_default_str();
   cmd->add_option("--detail", o->detail, "FULL,REDUCED metres: whole mesh within FULL, deepest level faked within REDUCED, two beyond (default 40,150; lavapipe 0,15)");
   cmd->add_option("--light", o->light, "Sun direction AZIMUTH,ELEVATION in degrees")->capture_default_str();
   cmd->add_option("--camera-path", o->cameraPath, "Scripted: cameras ex,ey,ez,tx,ty,tz[,fov], one per line, visited over --frames");
-  cmd->add_option("--frames", o->frames, "Scripted: render this many frames, then exit (default with a path: 60)")->check(CLI::Range(1, 100000));
-  cmd->add_option("--screenshot-every", o->screenshotEvery, "Scripted: write every K-th frame as PNG (default: the last)")->check(CLI::Range(1, 100000));
+  cmd->add_option("--frames", o->frames, "Scripted: render this many frames, then exit (default with a path: 60)")->check(Whole(1, 100000));
+  cmd->add_option("--screenshot-every", o->screenshotEvery, "Scripted: write every K-th frame as PNG (default: the last)")->check(Whole(1, 100000));
   cmd->add_option("--out", o->out, "Folder for screenshots")->capture_default_str();
   cmd->add_option("--events", o->events, "Scripted window events FRAME:ACTION,... with ACTION resize=WxH, minimise, restore, fullscreen, regenerate");
   cmd->add_flag("--offscreen", o->offscreen, "Render offscreen even when a display is there");

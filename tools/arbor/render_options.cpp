@@ -16,13 +16,18 @@ render::RenderMode parseMode(const std::string& mode, const std::string& field) 
 }
 
 void parseSize(const std::string& text, std::uint32_t& width, std::uint32_t& height) {
-  unsigned w = 0, h = 0;
-  char x = 0, rest = 0;
-  if (std::sscanf(text.c_str(), "%u%c%u%c", &w, &x, &h, &rest) != 3 || x != 'x' || w < 16 || h < 16 || w > 8192 || h > 8192) {
+  // Digits only: sscanf's %u would wrap 4294967360 to 64.
+  const auto x = text.find('x');
+  const auto side = [&](const std::string& digits) -> long {
+    if (digits.empty() || digits.size() > 5 || digits.find_first_not_of("0123456789") != std::string::npos) return -1;
+    return std::stol(digits);
+  };
+  const long w = x == std::string::npos ? -1 : side(text.substr(0, x)), h = x == std::string::npos ? -1 : side(text.substr(x + 1));
+  if (w < 16 || h < 16 || w > 8192 || h > 8192) {
     throw SpeciesError(text, "--size", "expected WIDTHxHEIGHT with each in [16, 8192], e.g. 640x800");
   }
-  width = w;
-  height = h;
+  width = static_cast<std::uint32_t>(w);
+  height = static_cast<std::uint32_t>(h);
 }
 
 bool validationWanted(bool flag) {

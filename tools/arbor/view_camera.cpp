@@ -2,10 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
-#include <stdexcept>
 
-#include "species/species_io.hpp"
 
 namespace arbor::cli {
 
@@ -55,24 +52,6 @@ render::Camera ViewCamera::camera() const {
   c.target = orbit ? target : position + lookDirection(yaw, pitch);
   c.fovY = fovY;
   return c;
-}
-
-std::vector<render::Camera> readCameraPath(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw SpeciesError(path, "--camera-path", "cannot open the camera path file");
-  std::vector<render::Camera> keys;
-  std::string line;
-  for (int number = 1; std::getline(in, line); ++number) {
-    const auto first = line.find_first_not_of(" \t\r");
-    if (first == std::string::npos || line[first] == '#') continue;
-    try {
-      keys.push_back(render::parseCamera(line.substr(first)));
-    } catch (const std::invalid_argument& e) {
-      throw SpeciesError(path, "line " + std::to_string(number), e.what());
-    }
-  }
-  if (keys.empty()) throw SpeciesError(path, "--camera-path", "no camera in the file (one ex,ey,ez,tx,ty,tz[,fov] per line)");
-  return keys;
 }
 
 render::Camera cameraOnPath(const std::vector<render::Camera>& keys, int frame, int frames) {

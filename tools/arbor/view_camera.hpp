@@ -1,6 +1,6 @@
 #pragma once
 // The walkthrough's cameras: first-person (WASD + mouse look) and orbit around a point, and scripted camera
-// paths read from a file (one camera per line, interpolated over the frames).
+// paths (view_script.hpp) interpolated over the frames.
 #include <string>
 #include <vector>
 
@@ -28,9 +28,6 @@ struct ViewCamera {
   render::Camera camera() const;
 };
 
-// A camera path: each non-empty line not starting with '#' is "ex,ey,ez,tx,ty,tz[,fov]"; errors name the file
-// and line. At least one camera.
-std::vector<render::Camera> readCameraPath(const std::string& path);
 // The camera at frame `frame` of `frames`, moving evenly from the first key to the last.
 render::Camera cameraOnPath(const std::vector<render::Camera>& keys, int frame, int frames);
 
