@@ -76,12 +76,6 @@ TEST_CASE("usage errors exit with 2", "[cli]") {
   CHECK(run("frobnicate").exitCode == 2);
 }
 
-TEST_CASE("an unwritable output fails cleanly with 1", "[cli]") {
-  const Result r = run("generate palm --out /nonexistent-dir/palm.json");
-  CHECK(r.exitCode == 1);
-  CHECK_THAT(r.output, Catch::Contains("/nonexistent-dir/palm.json"));
-}
-
 TEST_CASE("every subcommand has --help", "[cli]") {
   for (const char* command : {"", "generate", "species", "bench", "bench generate", "bench mesh", "bench tess", "bench leaves", "render", "view",
                               "textures", "accuracy"}) {

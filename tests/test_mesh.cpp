@@ -5,6 +5,7 @@
 #include <cmath>
 #include <map>
 
+#include "common/input_error.hpp"
 #include "growth/weber_penn.hpp"
 #include "mesh/cross_section.hpp"
 #include "mesh/impostor_segments.hpp"
@@ -275,4 +276,39 @@ TEST_CASE("triangles keep the orientation of their quads", "[mesh]") {
     // A handful at most (fewer than 1 in 5000), where a child's first band turns back along a bent parent.
     CHECK(folded * 5000 < tree.mesh.quads.size());
   }
+}
+
+TEST_CASE("many trunks meet in one closed hub, and every vertex keeps a level the tree has", "[mesh][trunks]") {
+  // Four or more trunks share the hub's sides (sub-boxes), which belong to no stem: the hub is level 0.
+  for (int trunks : {2, 5, 16, 64}) {
+    SpeciesParams p = test::steadySpecies();
+    p.levels = 2;
+    p.stemLevels.resize(2);
+    p.stemLevels[0].branches = trunks;
+    p.stemLevels[0].downAngle = 30;
+    p.stemLevels[0].rotate = 137.5;
+    p.angleRule = AngleRule::Classic;
+    INFO(trunks << " trunks");
+    const TreeMesh tree = buildTreeMesh(grow(p, 1));
+    const MeshTopologyReport r = checkTopology(tree.mesh);
+    CHECK(r.boundaryEdges == 0);
+    CHECK(r.nonManifoldEdges == 0);
+    CHECK(r.components == 1);
+    CHECK(r.eulerCharacteristic == 2);
+    CHECK(*std::max_element(tree.mesh.level.begin(), tree.mesh.level.end()) <= 1);
+    CHECK(std::count(tree.mesh.level.begin(), tree.mesh.level.end(), 0) > 8 * trunks);
+  }
+}
+
+TEST_CASE("a mesh past its quad limit is refused before it is built, naming what to change", "[mesh][limits]") {
+  const Skeleton s = grow(test::loadPreset("palm"), 1);
+  MeshOptions tight;
+  tight.maxQuads = 500;
+  CHECK_THROWS_WITH(buildTreeMesh(s, tight), Catch::Contains("more than 500 quads") && Catch::Contains("lower Levels"));
+  MeshOptions dense;
+  dense.maxRingDistance = 1e-4;  // millions of cross sections on the trunk alone
+  CHECK_THROWS_WITH(buildTreeMesh(s, dense), Catch::Contains("extra cross sections") && Catch::Contains("further apart"));
+  MeshOptions absurd;
+  absurd.ringSpacing = 1e-300;  // would overflow an int of cross sections
+  CHECK_THROWS_AS(buildTreeMesh(s, absurd), LimitError);
 }

@@ -252,6 +252,51 @@ TEST_CASE("extra levels beyond the species' reuse its deepest level parameters",
 TEST_CASE("too large a tree is refused, not grown until memory runs out", "[skeleton]") {
   SpeciesParams p = test::steadySpecies();
   GrowthOptions o;
-  o.maxNodes = 100;
+  o.limits.nodes = 100;
   CHECK_THROWS_AS(generateSkeleton(p, o), GenerationError);
+}
+
+TEST_CASE("the size estimate is close to the grown tree on every preset and refuses hopeless trees at once", "[skeleton][limits]") {
+  for (const std::string& name : test::presetNames()) {
+    const SpeciesParams p = test::loadPreset(name);
+    const TreeEstimate e = estimateTree(p);
+    const SkeletonStats stats = skeletonStats(grow(p, 1));
+    INFO(name << ": " << e.nodes << " nodes estimated, " << stats.nodes << " grown; " << e.leaves << " leaves estimated, " << stats.leaves);
+    // It cannot see pruning, random variation or children left out for their size: high rather than low.
+    CHECK(e.nodes >= 0.9 * static_cast<double>(stats.nodes));
+    CHECK(e.nodes <= 2.0 * static_cast<double>(stats.nodes));
+    CHECK(e.leaves >= 0.7 * static_cast<double>(stats.leaves));
+    CHECK(e.leaves <= 2.0 * static_cast<double>(stats.leaves));
+    CHECK(e.excess(TreeLimits{}).empty());
+  }
+  // Two clones at every joint of a 64-segment trunk: 3^63 stems.
+  SpeciesParams huge = test::steadySpecies();
+  huge.levels = 1;
+  huge.stemLevels.resize(1);
+  huge.stemLevels[0].segSplits = 2;
+  huge.stemLevels[0].curveRes = 64;
+  const TreeEstimate e = estimateTree(huge);
+  CHECK(e.nodes > 1e29);
+  CHECK_THAT(e.excess(TreeLimits{}), Catch::Contains("SegSplits 2 over CurveRes 64") && Catch::Contains("limit"));
+  CHECK_THROWS_WITH(generateSkeleton(huge, GrowthOptions{}), Catch::Contains("SegSplits"));
+}
+
+TEST_CASE("the node limit holds while clones and pruning walks are made, not after", "[skeleton][limits]") {
+  SpeciesParams p = test::steadySpecies();
+  p.shape = 8;
+  p.pruneRatio = 1;
+  p.pruneWidth = 0.3;
+  p.leaves = 0;
+  for (auto& lp : p.stemLevels) {
+    lp.segSplits = 0.5;
+    lp.curveRes = 8;
+  }
+  GrowthOptions unlimited;
+  unlimited.limits.nodes = 100'000'000;
+  const std::size_t grown = skeletonStats(generateSkeleton(p, unlimited)).nodes;
+  GrowthOptions o;
+  o.limits.nodes = grown / 2;
+  REQUIRE(estimateTree(p).excess(o.limits, 16.0).empty());  // so the limit is met while growing, not from the estimate
+  CHECK_THROWS_WITH(generateSkeleton(p, o), Catch::Contains("more than " + std::to_string(grown / 2) + " nodes") &&
+                                                Catch::Contains("on level"));
 }
