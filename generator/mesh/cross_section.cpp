@@ -13,6 +13,11 @@ Vec3 anyPerpendicular(const Vec3& t) {
 
 }  // namespace
 
+Vec3 directionOr(const Vec3& v, const Vec3& fallback) {
+  const double length = glm::length(v);
+  return length > 1e-9 ? v / length : fallback;
+}
+
 RingFrame transportFrame(const RingFrame& frame, const Vec3& newT) {
   const Vec3 t = glm::normalize(newT);
   const double c = glm::dot(frame.T, t);

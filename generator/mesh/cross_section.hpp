@@ -12,6 +12,9 @@ struct RingFrame {
 };
 
 // The frame moved to a new direction by the smallest rotation (parallel transport: no twist).
+// v normalised, or `fallback` (unit) where v is too short to have a direction (opposite directions summed).
+Vec3 directionOr(const Vec3& v, const Vec3& fallback);
+
 RingFrame transportFrame(const RingFrame& frame, const Vec3& newT);
 
 // A frame for direction T whose N is as close as possible to `hint`.

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
 
 #include "common/input_error.hpp"
 #include "common/text_util.hpp"
@@ -230,7 +231,7 @@ class Builder {
     // The first cross section must clear the port by its own size, or its tube grazes the parent. It leaves
     // between the port's normal and the child's direction; where that neck would cut a face of the parent,
     // straighter and longer necks are tried.
-    const Vec3 preferred = start.top ? glm::normalize(normal + d)
+    const Vec3 preferred = start.top ? directionOr(normal + d, normal)
                                      : (glm::dot(d, normal) > 0.2 ? glm::normalize(2.0 * normal + d) : normal);
     // A port is as wide as the parent; the neck narrows to at most half of it (a branch collar), so that
     // its quads stay convex, and the child's own radius is reached at the next cross section.
@@ -243,7 +244,8 @@ class Builder {
       bool found = false;
       for (double scale : {1.0, 1.6, 2.5}) {
         const Vec3 c = center + dir * (e0 * scale);
-        const auto offsets = ringOffsets(transportFrame(port.frame, glm::normalize(dir + d)), exitRadius * opt_.limitCompensation);
+        // A child leaving straight against its port (dir = -d) leaves along the port first: backward connection.
+        const auto offsets = ringOffsets(transportFrame(port.frame, directionOr(dir + d, dir)), exitRadius * opt_.limitCompensation);
         const std::array<Vec3, 4> corners{c + offsets[0], c + offsets[1], c + offsets[2], c + offsets[3]};
         if (!bandCrossesParent(start, portCorners, corners)) {
           exitDir = dir;
@@ -257,7 +259,7 @@ class Builder {
     const Vec3 exitCenter = center + exitDir * e;
     for (int k = 0; k < 4; ++k) addUvw(q[static_cast<std::size_t>(k)], k, port.tex);  // child-then-parent averaging
 
-    const RingFrame exitFrame = transportFrame(port.frame, glm::normalize(exitDir + d));
+    const RingFrame exitFrame = transportFrame(port.frame, directionOr(exitDir + d, exitDir));
     sLo = poly.firstBeyond(start.branchPoint, glm::distance(exitCenter, start.branchPoint) + 0.5 * rc);
     if (!start.top) {
       // A child at a small angle runs along its parent; its tube begins where its skeleton has left the parent.
@@ -686,6 +688,12 @@ TreeMesh buildTreeMesh(const Skeleton& skeleton, const MeshOptions& options) {
   out.quadStem.reserve(vertices);
   out.rings.reserve(vertices / 4);
   Builder(skeleton, options, out).run();
+  // Degenerate geometry must never leave here as NaN vertices (exports and the GPU would take them silently).
+  for (const glm::vec3& p : out.mesh.positions) {
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {
+      throw std::logic_error("mesh: a vertex is not finite (a degenerate joint); please report the species file and seed");
+    }
+  }
   return out;
 }
 
