@@ -2,6 +2,7 @@
 # Installs the Debian 12 packages Arbor builds, tests and runs with; skips what is already there.
 set -euo pipefail
 
+# --fuzz: also clang and its libFuzzer runtime (tools/fuzz.sh).
 packages=(
   build-essential cmake pkg-config
   mesa-vulkan-drivers libvulkan-dev vulkan-validationlayers vulkan-tools glslang-tools spirv-tools
@@ -9,6 +10,7 @@ packages=(
   nlohmann-json3-dev libtinyxml2-dev libtinygltf-dev libcli11-dev libimgui-dev
   xvfb xauth xdotool
 )
+[[ "${1:-}" == "--fuzz" ]] && packages+=(clang-14 libclang-rt-14-dev)
 
 missing=()
 for p in "${packages[@]}"; do

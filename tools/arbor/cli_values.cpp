@@ -3,6 +3,7 @@
 #include <cctype>
 #include <cerrno>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <unistd.h>
@@ -126,6 +127,31 @@ void requireOutputFolder(const std::string& path, const std::string& field) {
   if (p.empty() || !fs::is_directory(p, ec) || ::access(p.c_str(), W_OK | X_OK) != 0) {
     throw InputError(path, field, "cannot be created or written (" + p.string() + " is not a writable folder)");
   }
+}
+
+void parseSize(const std::string& text, std::uint32_t& width, std::uint32_t& height) {
+  // Digits only: sscanf's %u would wrap 4294967360 to 64.
+  const auto x = text.find('x');
+  const auto side = [&](const std::string& digits) -> long {
+    if (digits.empty() || digits.size() > 5 || digits.find_first_not_of("0123456789") != std::string::npos) return -1;
+    return std::stol(digits);
+  };
+  const long w = x == std::string::npos ? -1 : side(text.substr(0, x)), h = x == std::string::npos ? -1 : side(text.substr(x + 1));
+  if (w < 16 || h < 16 || w > 8192 || h > 8192) {
+    throw InputError(text, "--size", "expected WIDTHxHEIGHT with each in [16, 8192], e.g. 640x800");
+  }
+  width = static_cast<std::uint32_t>(w);
+  height = static_cast<std::uint32_t>(h);
+}
+
+glm::vec2 parseSunAngles(const std::string& text) {
+  float az = 0.0f, el = 0.0f;
+  char comma = 0, rest = 0;
+  if (std::sscanf(text.c_str(), "%f%c%f%c", &az, &comma, &el, &rest) != 3 || comma != ',' || !(el >= -90.0f && el <= 90.0f) ||
+      !std::isfinite(az)) {
+    throw InputError(text, "--light", "expected AZIMUTH,ELEVATION in degrees, elevation from -90 to 90, e.g. 30,45");
+  }
+  return {az, el};
 }
 
 }  // namespace arbor::cli

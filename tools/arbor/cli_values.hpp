@@ -2,6 +2,7 @@
 // Command-line values checked as text, before CLI11 converts them: CLI11's Range lets NaN through (it fails
 // both comparisons) and its unsigned conversion wraps "-1" and 2^64, so every number option uses these.
 #include <CLI/CLI.hpp>
+#include <glm/vec2.hpp>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -21,6 +22,11 @@ CLI::Validator Seed();
 std::vector<std::string> splitList(const std::string& text, const std::string& field);
 // Comma-separated finite numbers, each within [lo, hi]; anything else is an InputError naming `field`.
 std::vector<float> parseNumbers(const std::string& text, const std::string& field, float lo, float hi);
+
+// "WIDTHxHEIGHT", each in [16, 8192].
+void parseSize(const std::string& text, std::uint32_t& width, std::uint32_t& height);
+// "AZIMUTH,ELEVATION" in degrees (--light), elevation within [-90, 90].
+glm::vec2 parseSunAngles(const std::string& text);
 
 // An output file name must have a name before its extension ("--out .obj" is refused), and its folder must
 // exist and be writable: checked before any work, so a run never fails at its end for a path given at its start.

@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <string>
 
+#include "cli_values.hpp"
 #include "render/renderer.hpp"
 #include "vk/context.hpp"
 
@@ -10,10 +11,6 @@ namespace arbor::cli {
 
 // "flat", "pn" or "acc"; anything else is bad input naming `field`.
 render::RenderMode parseMode(const std::string& mode, const std::string& field = "--mode");
-// "WIDTHxHEIGHT", each in [16, 8192].
-void parseSize(const std::string& text, std::uint32_t& width, std::uint32_t& height);
-// "AZIMUTH,ELEVATION" in degrees (--light), elevation within [-90, 90].
-glm::vec2 parseSunAngles(const std::string& text);
 // The same as a unit vector towards the sun.
 glm::vec3 parseLight(const std::string& text);
 // On when asked for, when ARBOR_VALIDATION=1 (the tests set it), and always in debug builds.

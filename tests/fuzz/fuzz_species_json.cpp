@@ -1,0 +1,14 @@
+// Species JSON: parsed, and when valid grown and meshed under the default limits (a valid file must also
+// finish or be refused: hangs and memory past the limits are findings too).
+#include "fuzz_target.hpp"
+#include "growth/weber_penn.hpp"
+#include "mesh/tree_mesh.hpp"
+#include "species/species_io.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  return arbor::fuzz::guarded(data, size, [](const std::string& text) {
+    const arbor::SpeciesParams p = arbor::readSpeciesJson(text, "fuzz.json");
+    const arbor::Skeleton s = arbor::generateSkeleton(p, arbor::GrowthOptions{});
+    arbor::buildTreeMesh(s);
+  });
+}

@@ -1,0 +1,39 @@
+#!/usr/bin/env bash
+# Fuzzes every parser with libFuzzer under AddressSanitizer and UndefinedBehaviorSanitizer.
+#   bash tools/fuzz.sh [SECONDS_PER_TARGET] [TARGET...]     (default 60 s each, every target)
+# Starts from the kept corpus (tests/fuzz/corpus/<target>/); new interesting inputs collect in
+# build-fuzz/corpus/<target>/, findings (crashes, hangs past 10 s, memory past 2 GB) in build-fuzz/findings/<target>/.
+# Exit status 1 when anything was found: copy the input into the kept corpus once it is fixed.
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+seconds="${1:-60}"
+shift || true
+targets=("$@")
+((${#targets[@]})) || targets=(species_json species_xml camera_path events cli_values)
+
+bash "$root/tools/install-deps.sh" --fuzz
+cmake -S "$root" -B "$root/build-fuzz" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_C_COMPILER=clang-14 -DCMAKE_CXX_COMPILER=clang++-14 \
+  -DARBOR_FUZZ=ON -DARBOR_BUILD_TESTS=OFF -DARBOR_WERROR=OFF > /dev/null
+targets_to_build=()
+for t in "${targets[@]}"; do targets_to_build+=(--target "fuzz_$t"); done
+cmake --build "$root/build-fuzz" -j"$(nproc)" "${targets_to_build[@]}"
+
+found=0
+for t in "${targets[@]}"; do
+  work="$root/build-fuzz/corpus/$t" findings="$root/build-fuzz/findings/$t"
+  mkdir -p "$work" "$findings"
+  echo "arbor fuzz: $t for ${seconds} s (kept corpus: $(ls "$root/tests/fuzz/corpus/$t" | wc -l) inputs)"
+  # A finding stops its target: it is to be looked at, not counted.
+  if ! ASAN_OPTIONS=detect_leaks=1:allocator_may_return_null=1 UBSAN_OPTIONS=print_stacktrace=1 \
+      "$root/build-fuzz/tests/fuzz/fuzz_$t" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -malloc_limit_mb=2048 \
+      -max_len=65536 -print_final_stats=1 -artifact_prefix="$findings/" "$work" "$root/tests/fuzz/corpus/$t" \
+      > "$root/build-fuzz/fuzz-$t.log" 2>&1; then
+    found=1
+    echo "arbor fuzz: $t: FINDING, see build-fuzz/fuzz-$t.log and $findings/"
+    grep -E "ERROR|SUMMARY|Test unit written" "$root/build-fuzz/fuzz-$t.log" | head -5 || true
+  else
+    runs=$(grep -oE "stat::number_of_executed_units: *[0-9]+" "$root/build-fuzz/fuzz-$t.log" | grep -oE "[0-9]+$" || echo "?")
+    echo "arbor fuzz: $t: no finding in $runs runs"
+  fi
+done
+exit "$found"
