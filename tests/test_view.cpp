@@ -105,16 +105,23 @@ TEST_CASE("the viewer survives resize, minimise, fullscreen and regeneration, ov
 
 TEST_CASE("the viewer answers keys: F12 takes a screenshot, W moves the camera, Esc leaves", "[view]") {
   const std::string dir = freshDir("view-keys"), log = test::tempPath("view-keys.log"), script = test::tempPath("view-keys.sh");
-  // xdotool types into the window under Xvfb once the viewer says it runs; `wait` passes on its exit status.
-  std::ofstream(script) << ARBOR_BINARY << " view --validation palm --size 240x180 --out " << dir << " > " << log << " 2>&1 &\n"
+  // xdotool types into the window under Xvfb. Every step waits for the viewer to show it was taken (its start
+  // line, each screenshot's "wrote" line, its exit), never for a fixed time: a loaded machine only makes it slower.
+  // --step 0.25 moves the camera by a quarter second's walk in every frame, however long the frame took.
+  std::ofstream(script) << "log=" << log << "\n"
+                        << "waitfor() { i=0; until grep -q \"$1\" $log; do i=$((i+1)); [ $i -gt 1200 ] && { echo \"timed out waiting for $1\"; return 1; }; sleep 0.05; done; }\n"
+                        << ARBOR_BINARY << " view --validation palm --size 240x180 --step 0.25 --out " << dir << " > $log 2>&1 &\n"
                         << "pid=$!\n"
-                        << "for i in $(seq 1 600); do grep -q 'interactive on' " << log << " && break; sleep 0.1; done\n"
+                        << "waitfor 'interactive on' || { kill $pid; exit 1; }\n"
                         << "win=$(timeout 60 xdotool search --sync --name '^Arbor$' | head -1)\n"
                         << "xdotool windowfocus --sync \"$win\"\n"
-                        << "sleep 0.5; xdotool key F12; sleep 0.5\n"
-                        << "xdotool keydown w; sleep 1.5; xdotool keyup w\n"
-                        << "sleep 0.5; xdotool key F12; sleep 0.5; xdotool key Escape\n"
-                        << "(sleep 60; kill $pid) > /dev/null 2>&1 &\n"  // Esc not heard: end it, and fail
+                        << "xdotool key F12\n"
+                        << "waitfor 'frame-0001.png' || { kill $pid; exit 1; }\n"
+                        << "xdotool keydown w\n"  // held while three more screenshots are taken: at least those frames walk
+                        << "for n in 2 3 4; do xdotool key F12; waitfor \"frame-000$n.png\" || { kill $pid; exit 1; }; done\n"
+                        << "xdotool keyup w\n"
+                        << "xdotool key Escape\n"
+                        << "(sleep 120; kill $pid) > /dev/null 2>&1 &\n"  // Esc not heard: end it, and fail
                         << "watchdog=$!\n"
                         << "wait $pid; status=$?\n"
                         << "kill $watchdog 2>/dev/null\n"
@@ -125,9 +132,9 @@ TEST_CASE("the viewer answers keys: F12 takes a screenshot, W moves the camera, 
   INFO(r.output << output);
   REQUIRE(r.exitCode == 0);  // Esc left the viewer, without a validation error
   REQUIRE(fs::exists(fs::path(dir) / "frame-0001.png"));
-  REQUIRE(fs::exists(fs::path(dir) / "frame-0002.png"));
+  REQUIRE(fs::exists(fs::path(dir) / "frame-0004.png"));
   const ImageDifference moved = compareImages(readPng((fs::path(dir) / "frame-0001.png").string()),
-                                              readPng((fs::path(dir) / "frame-0002.png").string()), 16);
+                                              readPng((fs::path(dir) / "frame-0004.png").string()), 16);
   CHECK(moved.pixelsOverThreshold > 1000);  // W brought the orbit camera closer
 }
 

@@ -56,6 +56,7 @@ struct ViewOptions {
   std::string events;
   bool offscreen = false;
   bool overlayInScript = false;
+  float step = 0.0f;  // seconds the cameras move per frame (0: the frame's own time)
   std::string device;
   bool validation = false;
 };
@@ -217,7 +218,8 @@ int runWindow(const ViewOptions& o, ViewPlan& plan, ViewState& state) {
       if (size.width == 0 || size.height == 0) continue;  // minimised in a script: nothing to draw into
       const auto now = std::chrono::steady_clock::now();
       const float elapsed = std::chrono::duration<float>(now - last).count();
-      const float seconds = std::min(0.25f, elapsed);  // a slow frame must not throw the walker far
+      // A slow frame must not throw the walker far; --step makes walks independent of the frame time.
+      const float seconds = o.step > 0.0f ? o.step : std::min(0.25f, elapsed);
       last = now;
       bool screenshot = scripted && ((f + 1) % every == 0 || f + 1 == frames);
       if (!scripted) {
@@ -290,6 +292,11 @@ int runWindow(const ViewOptions& o, ViewPlan& plan, ViewState& state) {
       if (!current) swapchain.recreate(win.framebufferSize());
       if (state.regenerate) {
         state.regenerate = false;
+        updateEstimates(state, params, o.species);  // the panel's button is off past the limits; --events is not
+        if (!state.refusal.empty()) {
+          std::fprintf(stderr, "arbor view: not regenerated, keeping the previous trees: %s\n", state.refusal.c_str());
+          continue;
+        }
         swapchain.waitIdle();
         try {
           auto grown = std::make_unique<render::Forest>(context, forestOptions(o, params), progressLine);
@@ -376,6 +383,8 @@ void addViewCommand(CLI::App& app, Action& action) {
   cmd->add_option("--events", o->events, "Scripted window events FRAME:ACTION,... with ACTION resize=WxH, minimise, restore, fullscreen, regenerate");
   cmd->add_flag("--offscreen", o->offscreen, "Render offscreen even when a display is there");
   cmd->add_flag("--overlay", o->overlayInScript, "Draw the overlay in scripted runs too");
+  cmd->add_option("--step", o->step, "Move the cameras this many seconds per frame, whatever the frame took (reproducible walks; 0: real time)")
+      ->check(Number(0.0, 1.0));
   cmd->add_option("--device", o->device, "Prefer the Vulkan device whose name contains this");
   cmd->add_flag("--validation", o->validation, "Enable the Khronos validation layer (also ARBOR_VALIDATION=1); errors fail the run");
   cmd->callback([o, &action] { action = [o] { return runView(*o); }; });
