@@ -7,6 +7,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "common/input_error.hpp"
 #include "growth/weber_penn.hpp"
 #include "mesh/impostor_segments.hpp"
 #include "mesh/tree_mesh.hpp"
@@ -70,6 +71,16 @@ std::vector<ForestPlacement> placeTrees(const std::vector<float>& crownRadii, st
 Forest::Forest(const vk::VulkanContext& context, const ForestOptions& options, const std::function<void(const std::string&)>& progress) {
   const std::uint32_t kinds = static_cast<std::uint32_t>(options.params.size()) * std::max(1u, options.seeds);
   const std::uint32_t distinct = std::min({kinds, std::max(1u, options.trees), TreeRenderer::kMaxTrees / kDetailLevels});
+  // Each detail meshes fewer levels than the one before; all three together hold at most three full meshes.
+  const auto tooMany = [&](double quads) {
+    return LimitError("the forest's " + std::to_string(distinct) + " distinct trees would hold about " + std::to_string(static_cast<long long>(quads)) +
+                      " quads at their three details, more than the limit of " + std::to_string(options.maxQuads) +
+                      "; give fewer species or --seeds, or lower Levels");
+  };
+  double estimated = 0.0;
+  for (std::uint32_t t = 0; t < distinct; ++t) estimated += estimateTree(options.params[t % options.params.size()]).quads;
+  if (estimated > static_cast<double>(options.maxQuads)) throw tooMany(estimated);
+  std::size_t quads = 0;
   for (std::uint32_t t = 0; t < distinct; ++t) {
     const std::size_t s = t % options.params.size();
     const std::uint64_t seed = options.seed + t / options.params.size();
@@ -83,6 +94,8 @@ Forest::Forest(const vk::VulkanContext& context, const ForestOptions& options, c
     for (std::uint32_t d = 0; d < kDetailLevels; ++d) {
       // The deepest d levels as fake branches over a mesh of the others (one skeleton: the same tree).
       const auto [mesh, impostors] = meshWithFakeBranches(skeleton, std::max(1, skeleton.levels - static_cast<int>(d)));
+      quads += mesh.mesh.quads.size();
+      if (quads > options.maxQuads) throw tooMany(static_cast<double>(quads));
       tree.detail[d] = uploadTree(context, mesh.mesh, buildPatches(mesh.mesh), skeleton.leaves, impostors);
       if (d == 0) {
         for (const glm::vec3& p : mesh.mesh.positions) reach = std::max(reach, glm::length(glm::vec2(p)));

@@ -10,6 +10,7 @@
 
 #include "gpu_tree.hpp"
 #include "renderer.hpp"
+#include "growth/tree_estimate.hpp"
 #include "species/species.hpp"
 
 namespace arbor::render {
@@ -20,6 +21,8 @@ struct ForestOptions {
   std::uint32_t trees = 1;           // instances (1: one tree at the origin)
   std::uint32_t seeds = 3;           // distinct seeds per species
   std::uint64_t seed = 1;            // first seed; also drives the placement
+  // All details of all distinct trees together: GPU memory (host memory on lavapipe) stays bounded.
+  std::size_t maxQuads = 3 * TreeLimits{}.quads;
 };
 
 // Levels of detail of each distinct tree: every stem level meshed; the deepest level as fake branches; the
@@ -53,7 +56,8 @@ struct ForestFrame {
 
 class Forest {
  public:
-  // Grows, meshes and uploads the distinct trees (progress: one line per tree) and places the instances.
+  // Grows, meshes and uploads the distinct trees (progress: one line per tree) and places the instances. Throws
+  // LimitError, before growing where the estimates show it, when the distinct trees pass options.maxQuads.
   Forest(const vk::VulkanContext& context, const ForestOptions& options, const std::function<void(const std::string&)>& progress);
 
   // For TreeRenderer::setTrees: the details of each distinct tree, in that order.

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cfloat>
+#include <cmath>
 
 #include <imgui.h>
 
@@ -46,24 +47,75 @@ void drawPanel(ViewState& state, const render::ForestFrame& frame, const render:
   ImGui::SliderFloat("sun azimuth", &state.lightAzimuth, -180.0f, 180.0f);
   ImGui::SliderFloat("sun elevation", &state.lightElevation, -10.0f, 90.0f);
   s.lightDirection = render::sunDirection(state.lightAzimuth, state.lightElevation);
+  if (state.estimates.size() != params.size()) updateEstimates(state, params, names);
+  bool edited = false;
   for (std::size_t k = 0; k < params.size(); ++k) {
     if (!ImGui::CollapsingHeader(names[k].c_str())) continue;
     ImGui::PushID(static_cast<int>(k));
+    const TreeEstimate& e = state.estimates[k];
+    ImGui::Text("about %.3g nodes, %.3g leaves, %.3g quads", e.nodes, e.leaves, e.quads);
     for (const TreeField& f : treeFields()) {
       if (f.real) {
         auto v = static_cast<float>(params[k].*f.real);
-        if (ImGui::SliderFloat(f.key, &v, static_cast<float>(f.min), static_cast<float>(std::min(f.max, 1e4)))) params[k].*f.real = v;
+        if (ImGui::SliderFloat(f.key, &v, static_cast<float>(f.min), static_cast<float>(std::min(f.max, 1e4)))) {
+          params[k].*f.real = v;
+          edited = true;
+        }
       } else if (f.integer && f.type == FieldType::Integer) {
         int v = params[k].*f.integer;
-        if (ImGui::SliderInt(f.key, &v, static_cast<int>(f.min), static_cast<int>(std::min(f.max, 1e4)))) params[k].*f.integer = v;
+        if (ImGui::SliderInt(f.key, &v, static_cast<int>(f.min), static_cast<int>(std::min(f.max, 1e4)))) {
+          params[k].*f.integer = v;
+          edited = true;
+        }
       }
     }
-    if (ImGui::Button("regenerate")) state.regenerate = true;
+    // Levels beyond those given reuse the deepest entry; Levels may grow up to the entries there are.
+    params[k].levels = std::min(params[k].levels, static_cast<int>(params[k].stemLevels.size()));
+    for (std::size_t l = 0; l < params[k].stemLevels.size(); ++l) {
+      if (!ImGui::TreeNode(reinterpret_cast<void*>(l + 1), "level %zu", l)) continue;
+      StemLevelParams& lp = params[k].stemLevels[l];
+      for (const LevelField& f : levelFields()) {
+        if (f.real) {
+          auto v = static_cast<float>(lp.*f.real);
+          const float lo = l == 0 && f.real == &StemLevelParams::branches ? 1.0f : static_cast<float>(f.min);
+          const float hi = l == 0 && f.real == &StemLevelParams::branches ? 64.0f : static_cast<float>(f.max);
+          if (ImGui::SliderFloat(f.key, &v, lo, hi)) {
+            lp.*f.real = l == 0 && f.real == &StemLevelParams::branches ? std::round(v) : v;
+            edited = true;
+          }
+        } else if (f.integer) {
+          int v = lp.*f.integer;
+          if (ImGui::SliderInt(f.key, &v, static_cast<int>(f.min), static_cast<int>(f.max))) {
+            lp.*f.integer = v;
+            edited = true;
+          }
+        }
+      }
+      ImGui::TreePop();
+    }
     ImGui::PopID();
+  }
+  if (edited) updateEstimates(state, params, names);
+  if (state.refusal.empty()) {
+    if (ImGui::Button("regenerate")) state.regenerate = true;
+  } else {
+    // Past a limit the trees are not regrown: the viewer would freeze for seconds and then refuse anyway.
+    ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.35f, 1.0f), "not regenerated:");
+    ImGui::TextWrapped("%s", state.refusal.c_str());
   }
   ImGui::Text("WASD move, right mouse look, Shift fast, Q/E down/up");
   ImGui::Text("Tab orbit/walk, F11 fullscreen, F12 screenshot, F1 panel");
   ImGui::End();
+}
+
+void updateEstimates(ViewState& state, const std::vector<SpeciesParams>& params, const std::vector<std::string>& names) {
+  state.estimates.clear();
+  state.refusal.clear();
+  for (std::size_t k = 0; k < params.size(); ++k) {
+    state.estimates.push_back(estimateTree(params[k]));
+    const std::string excess = state.estimates.back().excess(TreeLimits{});
+    if (!excess.empty() && state.refusal.empty()) state.refusal = names[k] + ": " + excess;
+  }
 }
 
 }  // namespace arbor::cli

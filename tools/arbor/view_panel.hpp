@@ -3,6 +3,7 @@
 #include <string>
 #include <vector>
 
+#include "growth/tree_estimate.hpp"
 #include "render/forest.hpp"
 #include "render/renderer.hpp"
 #include "species/species.hpp"
@@ -18,7 +19,12 @@ struct ViewState {
   bool regenerate = false;
   std::vector<float> frameTimes = std::vector<float>(120, 0.0f);
   std::size_t frameIndex = 0;
+  std::vector<TreeEstimate> estimates;  // per species, redone whenever a slider moves
+  std::string refusal;                  // why the trees as set would not be grown ("" when they would)
 };
+
+// The estimate of every species and, when one passes the limits, the refusal that stops regeneration.
+void updateEstimates(ViewState& state, const std::vector<SpeciesParams>& params, const std::vector<std::string>& names);
 
 // Figures (device, frame-time graph, triangles, trees per detail), render settings, and every numeric
 // parameter of each species with a regenerate button. Between the overlay's newFrame and render.
