@@ -1,12 +1,22 @@
 #pragma once
-// Output files appear whole or not at all: written beside the target, then renamed over it.
+// Output files appear whole or not at all: written beside the target, then renamed over it. An interrupt
+// (SIGINT, SIGTERM, SIGHUP, SIGQUIT) while one is written removes the temporary file before the process ends.
+#include <functional>
+#include <ostream>
 #include <string>
 
 namespace arbor {
 
 // Throws std::runtime_error naming the path when the file cannot be written.
 void writeFileAtomically(const std::string& path, const std::string& content);
+// The same, streaming: `write` puts the content into the temporary file (large outputs never sit in memory whole).
+void writeFileAtomically(const std::string& path, const std::function<void(std::ostream&)>& write);
 
 std::string readFile(const std::string& path);  // throws std::runtime_error naming the path
+
+namespace detail {
+// Registers `path` as a file being written, for the test that interrupts a process (never released).
+void registerPartialForTest(const std::string& path);
+}  // namespace detail
 
 }  // namespace arbor

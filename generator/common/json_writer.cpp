@@ -3,6 +3,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <ostream>
 
 namespace arbor {
 
@@ -17,10 +18,11 @@ void JsonWriter::separate() {
     return;
   }
   if (first_.empty()) return;
-  if (!first_.back()) out_ += ',';
+  const bool comma = !first_.back();
+  if (comma) out_ += ',';
   first_.back() = false;
   if (static_cast<int>(first_.size()) <= lineDepth_) newline();
-  else if (out_.back() == ',') out_ += ' ';
+  else if (comma) out_ += ' ';
 }
 
 JsonWriter& JsonWriter::beginObject() {
@@ -127,6 +129,11 @@ JsonWriter& JsonWriter::vec3(double x, double y, double z) {
   first_.pop_back();
   out_ += ']';
   return *this;
+}
+
+void JsonWriter::flushTo(std::ostream& out) {
+  out.write(out_.data(), static_cast<std::streamsize>(out_.size()));
+  out_.clear();
 }
 
 }  // namespace arbor

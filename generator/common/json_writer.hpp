@@ -2,6 +2,7 @@
 // A small streaming JSON writer: shortest round-trip numbers, fixed key order, byte-identical output
 // for identical input (a DOM is too slow for skeletons of a million values).
 #include <cstdint>
+#include <iosfwd>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -32,6 +33,9 @@ class JsonWriter {
   // Newlines only between the top-level fields and array elements of depth <= this.
   explicit JsonWriter(int lineDepth = 2) : lineDepth_(lineDepth) {}
   const std::string& str() const { return out_; }
+  // Moves what is written so far to `out` (large documents are streamed, never held whole).
+  void flushTo(std::ostream& out);
+  std::size_t pending() const { return out_.size(); }
 
  private:
   void separate();
