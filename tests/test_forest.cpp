@@ -2,6 +2,7 @@
 // farther trees with more of their levels as fake branches, the same tree instanced rather than grown again.
 #include <catch2/catch.hpp>
 
+#include "image/image_compare.hpp"
 #include "render/forest.hpp"
 #include "render_support.hpp"
 #include "test_support.hpp"
@@ -56,6 +57,10 @@ TEST_CASE("a forest instances its distinct trees, culls whole trees and fakes mo
   const render::ForestFrame farAway = forest.frame(overview, 1.5f, {0.5f, 1.0f});
   CHECK(farAway.perDetail[2] == farAway.visible);  // everything beyond a metre fakes two levels
   for (const render::TreeInstance& i : farAway.instances) CHECK(i.tree % render::kDetailLevels == 2);
+  for (const render::TreeInstance& i : farAway.instances) CHECK_FALSE(i.far);  // far only beyond its own distance
+  const render::ForestFrame far = forest.frame(overview, 1.5f, {0.5f, 1.0f, 2.0f});
+  CHECK(far.far == far.visible);
+  for (const render::TreeInstance& i : far.instances) CHECK(i.far);
   // Standing at the centre looking along +x: the trees behind are culled, and only they.
   render::Camera inside;
   inside.eye = glm::vec3(0.0f, 0.0f, 1.7f);
@@ -95,4 +100,36 @@ TEST_CASE("golden image: a small mixed forest from the viewer's overview, each t
   const test::GoldenCheck golden = test::checkGolden("forest-overview", session.image());
   INFO(golden.report);
   CHECK(golden.ok);
+}
+
+TEST_CASE("a far tree drawn without the tessellator looks as ACC at factor 1, with fewer fake branches", "[forest][render]") {
+  render::ForestOptions options;
+  options.species = {"black-tupelo"};
+  options.params = {test::loadPreset("black-tupelo")};
+  options.params[0].levels = 3;  // light enough for the suite; detail 2 meshes the trunk and fakes two levels
+  options.trees = 1;
+  options.seeds = 1;
+  render::RenderSession session(test::vulkan(), 160, 160, VK_SAMPLE_COUNT_1_BIT, test::textures());
+  const render::Forest forest(test::vulkan(), options, [](const std::string&) {});
+  session.renderer().setTrees(forest.gpuTrees());
+  const render::Camera camera = forest.overview(1.0f);
+  render::ForestFrame frame = forest.frame(camera, 1.0f, {0.0f, 0.0f, 1e6f});  // two levels faked, not far
+  REQUIRE(frame.instances.size() == 1);
+  CHECK_FALSE(frame.instances[0].far);
+  render::RenderSettings settings;
+  settings.mode = render::RenderMode::ACC;
+  settings.tessLevel = 1.0f;
+  settings.ground = false;
+  session.render(camera, settings, frame.instances);
+  const Image tessellated = session.image();
+  frame.instances[0].far = true;
+  const render::FrameResult far = session.render(camera, settings, frame.instances);
+  const Image flat = session.image();
+  // The same triangles through the same corners: only rasterisation order and normal interpolation may differ.
+  const ImageDifference d = compareImages(tessellated, flat, 24);
+  INFO(d.pixelsOverThreshold << " pixels differ by more than 24");
+  CHECK(d.pixelsOverThreshold <= 40);
+  const render::GpuTree& tree = *forest.gpuTrees()[2];
+  CHECK(far.gpu.triangles == tree.triangles);  // flat: two triangles per quad, nothing tessellated
+  CHECK(tree.sketchCount * 3 < tree.impostorCount);
 }

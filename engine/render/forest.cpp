@@ -93,10 +93,10 @@ Forest::Forest(const vk::VulkanContext& context, const ForestOptions& options, c
     float reach = 0.0f;
     for (std::uint32_t d = 0; d < kDetailLevels; ++d) {
       // The deepest d levels as fake branches over a mesh of the others (one skeleton: the same tree).
-      const auto [mesh, impostors] = meshWithFakeBranches(skeleton, std::max(1, skeleton.levels - static_cast<int>(d)));
+      const auto [mesh, impostors, sketch] = meshWithFakeBranches(skeleton, std::max(1, skeleton.levels - static_cast<int>(d)));
       quads += mesh.mesh.quads.size();
       if (quads > options.maxQuads) throw tooMany(static_cast<double>(quads));
-      tree.detail[d] = uploadTree(context, mesh.mesh, buildPatches(mesh.mesh), skeleton.leaves, impostors);
+      tree.detail[d] = uploadTree(context, mesh.mesh, buildPatches(mesh.mesh), skeleton.leaves, impostors, sketch, true);
       if (d == 0) {
         for (const glm::vec3& p : mesh.mesh.positions) reach = std::max(reach, glm::length(glm::vec2(p)));
       }
@@ -145,7 +145,9 @@ ForestFrame Forest::frame(const Camera& camera, float aspect, const DetailDistan
     const std::uint32_t detail = distance < distances.full ? 0u : distance < distances.reduced ? 1u : 2u;
     ++f.perDetail[detail];
     ++f.visible;
-    f.instances.push_back({kDetailLevels * p.tree + detail, placementModel(p, tree.detail[0].plantingDepth)});
+    const bool far = distance >= distances.far;
+    f.far += far ? 1 : 0;
+    f.instances.push_back({kDetailLevels * p.tree + detail, placementModel(p, tree.detail[0].plantingDepth), far});
   }
   return f;
 }

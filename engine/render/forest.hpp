@@ -30,9 +30,10 @@ struct ForestOptions {
 constexpr std::uint32_t kDetailLevels = 3;
 
 // Up to `full` metres (to the crown's nearest point) the whole mesh, up to `reduced` one level faked, beyond
-// two; 0 skips a tier.
+// two; 0 skips a tier. Beyond `far` a tree is drawn far (TreeInstance::far).
 struct DetailDistances {
   float full = 40.0f, reduced = 150.0f;
+  float far = 400.0f;  // beyond, the mesh is drawn without the tessellator and the fake branches as a sketch
 };
 
 struct ForestTree {
@@ -52,6 +53,7 @@ struct ForestFrame {
   std::vector<TreeInstance> instances;   // tree index: kDetailLevels t + detail
   std::uint32_t visible = 0, culled = 0;
   std::array<std::uint32_t, kDetailLevels> perDetail{};
+  std::uint32_t far = 0;
 };
 
 class Forest {

@@ -34,7 +34,8 @@ std::uint32_t pack(const std::array<std::uint8_t, 4>& bytes) {
 }  // namespace
 
 GpuTree uploadTree(const vk::VulkanContext& context, const QuadMesh& mesh, const PatchSet& patches,
-                   const std::vector<Leaf>& leaves, const std::vector<ImpostorSegment>& impostors) {
+                   const std::vector<Leaf>& leaves, const std::vector<ImpostorSegment>& impostors,
+                   const std::vector<ImpostorSegment>& sketch, bool far) {
   std::vector<GpuVertex> vertices(mesh.vertexCount());
   for (std::size_t i = 0; i < vertices.size(); ++i) {
     vertices[i] = {glm::vec4(mesh.positions[i], mesh.radius[i]), glm::vec4(mesh.normals[i], mesh.level[i]),
@@ -53,6 +54,14 @@ GpuTree uploadTree(const vk::VulkanContext& context, const QuadMesh& mesh, const
   const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
   tree.vertices = vk::uploadBuffer(context, vertices.data(), vertices.size() * sizeof(GpuVertex),
                                    storage | VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+  if (far && !vertices.empty()) {
+    const LimitVertices limit = limitVertices(mesh, patches);
+    for (std::size_t i = 0; i < vertices.size(); ++i) {
+      vertices[i].positionRadius = glm::vec4(limit.positions[i], mesh.radius[i]);
+      vertices[i].normalLevel = glm::vec4(limit.normals[i], mesh.level[i]);
+    }
+    tree.farVertices = vk::uploadBuffer(context, vertices.data(), vertices.size() * sizeof(GpuVertex), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+  }
   tree.indices = vk::uploadBuffer(context, triangles.data(), triangles.size() * sizeof(triangles[0]), storage | VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
   tree.patches = vk::uploadBuffer(context, records.data(), records.size() * sizeof(glm::uvec4), storage);
   tree.points = vk::uploadBuffer(context, patches.points.data(), patches.points.size() * sizeof(std::uint32_t), storage);
@@ -71,21 +80,29 @@ GpuTree uploadTree(const vk::VulkanContext& context, const QuadMesh& mesh, const
     std::swap(leafRecords[i - 1], leafRecords[std::uniform_int_distribution<std::size_t>(0, i - 1)(shuffle)]);
   }
   tree.leafCount = static_cast<std::uint32_t>(leafRecords.size());
+  if (!leaves.empty()) tree.leafBounds = {glm::vec3(leaves.front().position), glm::vec3(leaves.front().position)};
+  for (const Leaf& l : leaves) {
+    tree.leafBounds.lo = glm::min(tree.leafBounds.lo, glm::vec3(l.position));
+    tree.leafBounds.hi = glm::max(tree.leafBounds.hi, glm::vec3(l.position));
+  }
   if (!leafRecords.empty()) {
     tree.leaves = vk::uploadBuffer(context, leafRecords.data(), leafRecords.size() * sizeof(GpuLeaf), storage);
   }
   std::vector<GpuImpostor> impostorRecords;
-  impostorRecords.reserve(impostors.size());
-  for (const ImpostorSegment& s : impostors) {
-    impostorRecords.push_back({glm::vec4(glm::vec3(s.from), static_cast<float>(s.fromRadius)),
-                               glm::vec4(glm::vec3(s.to), static_cast<float>(s.toRadius)),
-                               glm::vec4(static_cast<float>(s.fromV), static_cast<float>(s.toV), static_cast<float>(s.level), 0.0f)});
+  impostorRecords.reserve(impostors.size() + sketch.size());
+  for (const auto* list : {&impostors, &sketch}) {
+    for (const ImpostorSegment& s : *list) {
+      impostorRecords.push_back({glm::vec4(glm::vec3(s.from), static_cast<float>(s.fromRadius)),
+                                 glm::vec4(glm::vec3(s.to), static_cast<float>(s.toRadius)),
+                                 glm::vec4(static_cast<float>(s.fromV), static_cast<float>(s.toV), static_cast<float>(s.level), 0.0f)});
+    }
   }
-  tree.impostorCount = static_cast<std::uint32_t>(impostorRecords.size());
+  tree.impostorCount = static_cast<std::uint32_t>(impostors.size());
+  tree.sketchCount = static_cast<std::uint32_t>(sketch.size());
   if (!impostorRecords.empty()) {
     tree.impostors = vk::uploadBuffer(context, impostorRecords.data(), impostorRecords.size() * sizeof(GpuImpostor), storage);
   }
-  tree.bytes = tree.vertices.size() + tree.indices.size() + tree.patches.size() + tree.points.size() + tree.leaves.size() +
+  tree.bytes = tree.vertices.size() + tree.farVertices.size() + tree.indices.size() + tree.patches.size() + tree.points.size() + tree.leaves.size() +
                tree.impostors.size();
   tree.bounds = meshBounds(mesh);
   // Planted so that the limit surface is at full width at the ground: the closed base's corners (limit

@@ -12,16 +12,19 @@ namespace arbor::render {
 
 struct GpuTree {
   vk::Buffer vertices;   // per vertex: position + radius, normal + level, uvw
+  vk::Buffer farVertices;  // the same at the limit surface: far trees drawn flat look as ACC at factor 1
   vk::Buffer indices;    // triangles, three per quad pair
   vk::Buffer patches;    // per patch: point offset, valences, prefixes, kind
   vk::Buffer points;     // control point vertex indices
   vk::Buffer leaves;     // per leaf: base + length, direction + half width, normal + kind; in random order
   vk::Buffer impostors;  // per fake-branch segment: parent node + radius, node + radius, bark v at both, level
   std::uint32_t leafCount = 0, impostorCount = 0;
+  std::uint32_t sketchCount = 0;  // the sketch's segments follow the impostors' in the same buffer
   std::uint32_t triangles = 0, patchCount = 0;
   std::uint32_t regular = 0, extraordinary = 0, fallback = 0;
   std::size_t bytes = 0;  // all buffers together
   Bounds bounds;           // object space
+  Bounds leafBounds;       // object space, of the leaves' bases: no leaf is nearer the eye than this box
   float plantingDepth = 0;  // how far the tree is sunk so that the closed base's rounded limit surface is underground
 };
 
@@ -33,6 +36,7 @@ Bounds plantedBounds(const GpuTree& tree);
 // `leaves` (the skeleton's) are shuffled with a fixed seed, so any prefix of them is a fair sample of the crown.
 // `impostors` are the fake branches standing in for the stems the mesh leaves out.
 GpuTree uploadTree(const vk::VulkanContext& context, const QuadMesh& mesh, const PatchSet& patches,
-                   const std::vector<Leaf>& leaves = {}, const std::vector<ImpostorSegment>& impostors = {});
+                   const std::vector<Leaf>& leaves = {}, const std::vector<ImpostorSegment>& impostors = {},
+                   const std::vector<ImpostorSegment>& sketch = {}, bool far = false);
 
 }  // namespace arbor::render

@@ -200,6 +200,7 @@ void TreeRenderer::beginFrame(VkCommandBuffer cmd, const Camera& camera, VkExten
   u.viewProj = projectionMatrix(camera, aspect) * u.view;
   u.inverseViewProj = glm::inverse(u.viewProj);
   u.cameraPos = glm::vec4(camera.eye, 1.0f);
+  eye_ = camera.eye;
   u.lightDir = glm::vec4(glm::normalize(s.lightDirection), s.lightIntensity);
   u.viewport = glm::vec4(static_cast<float>(extent.width), static_cast<float>(extent.height), 1.0f / static_cast<float>(extent.width),
                          1.0f / static_cast<float>(extent.height));
@@ -252,33 +253,38 @@ void TreeRenderer::draw(VkCommandBuffer cmd, VkExtent2D extent, const RenderSett
   }
   if (!drewTree_) return;
 
-  const auto mode = static_cast<std::size_t>(s.mode);
   const std::uint32_t chunk = primitivesPerDraw(s);
-  auto drawMesh = [&](const GpuTree& tree, VkPipeline pipeline) {
+  // Far trees skip the tessellator: their mesh at its limit positions is what ACC would draw at factor 1.
+  const auto drawnFar = [&](const TreeInstance& instance, const GpuTree& tree) {
+    return instance.far && tree.farVertices.handle() != VK_NULL_HANDLE && s.mode != RenderMode::Flat && !s.ceiling;
+  };
+  // `far`: the flat pipeline over the limit-surface vertices, however the tree is otherwise drawn.
+  auto drawMesh = [&](const GpuTree& tree, VkPipeline pipeline, RenderMode drawn, bool far) {
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
-    if (s.mode == RenderMode::Flat) {
+    if (drawn == RenderMode::Flat) {
       const VkDeviceSize offset = 0;
-      const VkBuffer vertices = tree.vertices.handle();
+      const VkBuffer vertices = far ? tree.farVertices.handle() : tree.vertices.handle();
       vkCmdBindVertexBuffers(cmd, 0, 1, &vertices, &offset);
       vkCmdBindIndexBuffer(cmd, tree.indices.handle(), 0, VK_INDEX_TYPE_UINT32);
     }
-    const std::uint32_t total = s.mode == RenderMode::ACC ? tree.patchCount : tree.triangles;
-    for (std::uint32_t base = 0; base < total; base += chunk) {
-      const std::uint32_t count = std::min(chunk, total - base);
+    const std::uint32_t total = drawn == RenderMode::ACC ? tree.patchCount : tree.triangles;
+    const std::uint32_t perDraw = drawn == s.mode ? chunk : total;  // only tessellated draws are split
+    for (std::uint32_t base = 0; base < total; base += perDraw) {
+      const std::uint32_t count = std::min(perDraw, total - base);
       constants.patchBase = base;
       vkCmdPushConstants(cmd, pipelines_.layout, stages, 0, sizeof constants, &constants);
       // PN and ACC fetch their corners in the control stage; only flat uses the vertex input.
-      if (s.mode == RenderMode::ACC) vkCmdDraw(cmd, 4 * count, 1, 4 * base, 0);
-      else if (s.mode == RenderMode::PN) vkCmdDraw(cmd, 3 * count, 1, 3 * base, 0);
+      if (drawn == RenderMode::ACC) vkCmdDraw(cmd, 4 * count, 1, 4 * base, 0);
+      else if (drawn == RenderMode::PN) vkCmdDraw(cmd, 3 * count, 1, 3 * base, 0);
       else vkCmdDrawIndexed(cmd, 3 * count, 1, 3 * base, 0, 0);
       ++lastDraws_;
     }
   };
-  auto drawPoints = [&](VkPipeline pipeline, std::uint32_t count) {
+  auto drawPoints = [&](VkPipeline pipeline, std::uint32_t count, std::uint32_t first = 0) {
     constants.patchBase = 0;
     vkCmdPushConstants(cmd, pipelines_.layout, stages, 0, sizeof constants, &constants);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
-    vkCmdDraw(cmd, count, 1, 0, 0);
+    vkCmdDraw(cmd, count, 1, first, 0);  // the point's index (gl_VertexIndex) counts from `first`
     ++lastDraws_;
   };
 
@@ -287,23 +293,41 @@ void TreeRenderer::draw(VkCommandBuffer cmd, VkExtent2D extent, const RenderSett
   for (const TreeInstance& instance : instances) {
     const GpuTree& tree = *trees_[instance.tree];
     bindTree(instance.tree, instance.model);
+    const bool far = drawnFar(instance, tree);
+    const RenderMode drawn = far ? RenderMode::Flat : s.mode;
+    const auto m = static_cast<std::size_t>(drawn);
     const VkPipeline mesh = s.ceiling && s.mode == RenderMode::ACC ? pipelines_.ceiling
-                            : s.revealBackFaces                       ? pipelines_.twoSided[mode]
-                                                                      : pipelines_.tree[mode];
-    drawMesh(tree, mesh);
-    if (s.impostors && tree.impostorCount > 0 && pipelines_.impostors) drawPoints(pipelines_.impostors, tree.impostorCount);
+                            : s.revealBackFaces                       ? pipelines_.twoSided[m]
+                                                                      : pipelines_.tree[m];
+    drawMesh(tree, mesh, drawn, far);
+    const bool sketch = instance.far && tree.sketchCount > 0;
+    const std::uint32_t impostors = sketch ? tree.sketchCount : tree.impostorCount;
+    if (s.impostors && impostors > 0 && pipelines_.impostors) drawPoints(pipelines_.impostors, impostors, sketch ? tree.impostorCount : 0u);
     if (s.leaves && tree.leafCount > 0 && pipelines_.leaves) {
-      // The geometry stage keeps a leaf when its rank (i + 1/2) / N is within the density: the rest need no draw.
-      const double kept = std::clamp(static_cast<double>(s.leafDensity), 0.0, 1.0) * tree.leafCount;
+      // The geometry stage keeps a leaf when its rank (i + 1/2) / N is within the density, thinned with the square of
+      // its distance beyond leafLodDistance: no leaf of this tree is nearer than its leaf box, so the leaves past
+      // the share kept there need no draw (a far forest runs the geometry stage for a few percent of its leaves).
+      double share = std::clamp(static_cast<double>(s.leafDensity), 0.0, 1.0);
+      if (s.leafLodDistance > 0.0f) {
+        const glm::vec3 eye(glm::inverse(instance.model) * glm::vec4(eye_, 1.0f));
+        const float nearest = glm::distance(eye, glm::clamp(eye, tree.leafBounds.lo, tree.leafBounds.hi));
+        share *= std::min(1.0, std::pow(static_cast<double>(s.leafLodDistance) / std::max(static_cast<double>(nearest), 1e-3), 2.0));
+      }
+      const double kept = share * tree.leafCount;
       drawPoints(pipelines_.leaves, std::min(tree.leafCount, static_cast<std::uint32_t>(kept + 0.5) + 1u));
     }
   }
   if (statistics_) vkCmdEndQuery(cmd, statistics_, 0);
   if (timestamps_) vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, timestamps_, 1);
-  if (s.wireframe && pipelines_.wireframe[mode]) {
+  if (s.wireframe) {
     for (const TreeInstance& instance : instances) {
+      const GpuTree& tree = *trees_[instance.tree];
+      const bool far = drawnFar(instance, tree);
+      const RenderMode drawn = far ? RenderMode::Flat : s.mode;
+      const VkPipeline wire = pipelines_.wireframe[static_cast<std::size_t>(drawn)];
+      if (!wire) continue;
       bindTree(instance.tree, instance.model);
-      drawMesh(*trees_[instance.tree], pipelines_.wireframe[mode]);
+      drawMesh(tree, wire, drawn, far);
     }
   }
 }

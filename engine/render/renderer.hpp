@@ -63,6 +63,9 @@ struct CapturedPoint {
 struct TreeInstance {
   std::uint32_t tree = 0;
   glm::mat4 model{1.0f};
+  // Far away: the mesh drawn flat at its limit positions (ACC's factor 1 without the tessellator), the fake
+  // branches as the tree's sketch (one per stem segment, no twigs).
+  bool far = false;
 };
 
 class TreeRenderer {
@@ -93,6 +96,7 @@ class TreeRenderer {
   std::uint32_t primitivesPerDraw(const RenderSettings& settings) const;
 
  private:
+  glm::vec3 eye_{0.0f};  // of the frame begun last: leaf draws are cut to what thinning keeps
   void writeSet(VkDescriptorSet set, const GpuTree* tree);
 
   const vk::VulkanContext& context_;

@@ -24,11 +24,34 @@ std::vector<ImpostorSegment> impostorSegments(const Skeleton& skeleton, int from
   return segments;
 }
 
+std::vector<ImpostorSegment> sketchSegments(const Skeleton& skeleton, int fromLevel, int belowLevel) {
+  std::vector<ImpostorSegment> segments;
+  for (const SkeletonStem& stem : skeleton.stems) {
+    if (stem.level < fromLevel || stem.level >= belowLevel || stem.nodeCount <= 0) continue;
+    int from = stem.attachNode >= 0 ? stem.attachNode : stem.firstNode;
+    double v = 0.0;
+    for (int n = stem.firstNode; n < stem.firstNode + stem.nodeCount; ++n) {
+      const SkeletonNode& node = skeleton.nodes[static_cast<std::size_t>(n)];
+      const bool last = n + 1 == stem.firstNode + stem.nodeCount;
+      if (!last && node.kind != NodeKind::Joint) continue;  // branch points and their neighbours: not drawn from afar
+      const SkeletonNode& start = skeleton.nodes[static_cast<std::size_t>(from)];
+      const double length = glm::distance(start.world.position, node.world.position);
+      const double fromRadius = from == stem.attachNode ? stem.startRadius : start.radius;
+      const double next = v + barkTextureAdvance(length, 0.5 * (fromRadius + node.radius));
+      if (length > 0.0) segments.push_back({start.world.position, node.world.position, fromRadius, node.radius, v, next, stem.level});
+      v = next;
+      from = n;
+    }
+  }
+  return segments;
+}
+
 FakedTree meshWithFakeBranches(const Skeleton& skeleton, int meshLevels) {
   const bool faked = meshLevels < skeleton.levels;
   MeshOptions options;
   options.levels = faked ? meshLevels : 0;
-  return {buildTreeMesh(skeleton, options), faked ? impostorSegments(skeleton, meshLevels) : std::vector<ImpostorSegment>{}};
+  if (!faked) return {buildTreeMesh(skeleton, options), {}, {}};
+  return {buildTreeMesh(skeleton, options), impostorSegments(skeleton, meshLevels), sketchSegments(skeleton, meshLevels, skeleton.levels - 1)};
 }
 
 }  // namespace arbor

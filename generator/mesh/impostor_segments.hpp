@@ -18,11 +18,17 @@ struct ImpostorSegment {
 // Segments of every stem of `fromLevel` and deeper, in node order (parents before children).
 std::vector<ImpostorSegment> impostorSegments(const Skeleton& skeleton, int fromLevel);
 
+// A sketch of the stems of levels [fromLevel, belowLevel) for trees far away: one segment per stem segment,
+// joint to joint (the nodes around branch points left out): the tupelo's is a quarter of impostorSegments'.
+std::vector<ImpostorSegment> sketchSegments(const Skeleton& skeleton, int fromLevel, int belowLevel);
+
 // A tree whose deepest levels are fake branches: the mesh of the stems below `meshLevels` and the segments of
-// the others (every level meshed and no segments when meshLevels reaches the skeleton's levels).
+// the others (every level meshed and no segments when meshLevels reaches the skeleton's levels), and their
+// sketch without the deepest level (its twigs are below a pixel where the sketch is drawn).
 struct FakedTree {
   TreeMesh tree;
   std::vector<ImpostorSegment> impostors;
+  std::vector<ImpostorSegment> sketch;
 };
 FakedTree meshWithFakeBranches(const Skeleton& skeleton, int meshLevels);
 

@@ -36,27 +36,56 @@ std::array<double, 4> bernsteinDerivative(double t) {
   return {-3.0 * s * s, 3.0 * s * s - 6.0 * t * s, 6.0 * t * s - 3.0 * t * t, 3.0 * t * t};
 }
 
+// Loop & Schaefer's interior points around corner i: (n v + 2 e_k + 2 e_k+1 + f_k) / (n + 5); their mean is the
+// corner's Catmull-Clark limit position.
+std::vector<glm::dvec3> cornerInterior(const PatchSet& patches, std::size_t patch, int i,
+                                       const std::function<glm::dvec3(std::uint32_t)>& attribute) {
+  const std::vector<std::uint32_t> ring = cornerRing(patches, patch, i);
+  const std::size_t n = patches.valence[patch][static_cast<std::size_t>(i)];
+  const double dn = static_cast<double>(n);
+  const glm::dvec3 v = attribute(patches.pointsOf(patch)[i]);
+  std::vector<glm::dvec3> interior(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    const glm::dvec3 e0 = attribute(ring[2 * k]), f = attribute(ring[2 * k + 1]), e1 = attribute(ring[(2 * k + 2) % (2 * n)]);
+    interior[k] = (dn * v + 2.0 * e0 + 2.0 * e1 + f) / (dn + 5.0);
+  }
+  return interior;
+}
+
+glm::dvec3 mean(const std::vector<glm::dvec3>& points) {
+  glm::dvec3 sum(0.0);
+  for (const glm::dvec3& p : points) sum += p;
+  return sum / static_cast<double>(points.size());
+}
+
 }  // namespace
+
+LimitVertices limitVertices(const QuadMesh& mesh, const PatchSet& patches) {
+  LimitVertices out{mesh.positions, mesh.normals};
+  std::vector<bool> done(mesh.vertexCount(), false);
+  const auto position = [&mesh](std::uint32_t v) { return glm::dvec3(mesh.positions[v]); };
+  for (std::size_t p = 0; p < patches.size(); ++p) {
+    if (patches.kind[p] == PatchKind::Fallback) continue;
+    for (int corner = 0; corner < 4; ++corner) {
+      const std::uint32_t v = patches.pointsOf(p)[static_cast<std::size_t>(corner)];
+      if (done[v]) continue;
+      done[v] = true;
+      out.positions[v] = glm::vec3(mean(cornerInterior(patches, p, corner, position)));
+      out.normals[v] = glm::vec3(accCornerNormal(patches, p, corner, position));
+    }
+  }
+  return out;
+}
 
 std::array<glm::dvec3, 16> accControlPoints(const PatchSet& patches, std::size_t patch,
                                             const std::function<glm::dvec3(std::uint32_t)>& attribute) {
   requireRings(patches, patch, "accControlPoints");
   std::array<glm::dvec3, 16> grid{};
-  std::vector<glm::dvec3> interior;
   for (int i = 0; i < 4; ++i) {
-    const std::vector<std::uint32_t> ring = cornerRing(patches, patch, i);
-    const std::size_t n = patches.valence[patch][static_cast<std::size_t>(i)];
-    const double dn = static_cast<double>(n);
-    const glm::dvec3 v = attribute(patches.pointsOf(patch)[i]);
-    interior.resize(n);
-    for (std::size_t k = 0; k < n; ++k) {
-      const glm::dvec3 e0 = attribute(ring[2 * k]), f = attribute(ring[2 * k + 1]), e1 = attribute(ring[(2 * k + 2) % (2 * n)]);
-      interior[k] = (dn * v + 2.0 * e0 + 2.0 * e1 + f) / (dn + 5.0);
-    }
-    glm::dvec3 sum(0.0);
-    for (std::size_t k = 0; k < n; ++k) sum += interior[k];
+    const std::vector<glm::dvec3> interior = cornerInterior(patches, patch, i, attribute);
+    const std::size_t n = interior.size();
     const auto& slot = kCornerSlots[static_cast<std::size_t>(i)];
-    grid[slot[0]] = (1.0 / dn) * sum;
+    grid[slot[0]] = mean(interior);
     grid[slot[1]] = (interior[0] + interior[n - 1]) / 2.0;
     grid[slot[2]] = (interior[0] + interior[1]) / 2.0;
     grid[slot[3]] = interior[0];

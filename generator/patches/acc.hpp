@@ -14,6 +14,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <vector>
 
 #include <glm/vec3.hpp>
 
@@ -42,6 +43,14 @@ std::array<glm::dvec3, 16> accControlPoints(const PatchSet& patches, std::size_t
 // counter-clockwise rings of cornerRing).
 glm::dvec3 accCornerNormal(const PatchSet& patches, std::size_t patch, int corner,
                            const std::function<glm::dvec3(std::uint32_t)>& position);
+
+// Every vertex at its Catmull-Clark limit position with its limit normal: what ACC draws at tessellation factor 1
+// (two triangles per quad through the corners), for drawing far trees without the tessellator. Vertices only in
+// fallback patches keep their control position and normal.
+struct LimitVertices {
+  std::vector<glm::vec3> positions, normals;
+};
+LimitVertices limitVertices(const QuadMesh& mesh, const PatchSet& patches);
 
 // Geometry and corner normals from the mesh positions. Throws std::invalid_argument for a Fallback patch.
 AccPatch buildAccPatch(const QuadMesh& mesh, const PatchSet& patches, std::size_t patch);

@@ -83,7 +83,7 @@ int runRender(const RenderOptions& o) {
   growth.seed = o.seed;
   growth.levels = meshLevels + impostorLevels;
   const Skeleton skeleton = generateSkeleton(params, growth);
-  const auto [tree, impostors] = meshWithFakeBranches(skeleton, meshLevels);
+  const auto [tree, impostors, sketch] = meshWithFakeBranches(skeleton, meshLevels);
   const PatchSet patches = buildPatches(tree.mesh);
 
   vk::VulkanContext context(vulkanOptions(o.validation, o.device));

@@ -85,15 +85,17 @@ std::string screenshotName(const std::string& dir, int frame) {
 
 std::string describe(const render::ForestFrame& f) {
   return std::to_string(f.visible) + " trees (detail " + std::to_string(f.perDetail[0]) + "/" + std::to_string(f.perDetail[1]) + "/" +
-         std::to_string(f.perDetail[2]) + ", " + std::to_string(f.culled) + " culled)";
+         std::to_string(f.perDetail[2]) + ", " + std::to_string(f.far) + " far, " + std::to_string(f.culled) + " culled)";
 }
 
-// "FULL,REDUCED" in metres; empty: none given (the device decides).
+// "FULL,REDUCED[,FAR]" in metres; empty: none given (the device decides).
 std::optional<render::DetailDistances> parseDetail(const std::string& text) {
   if (text.empty()) return std::nullopt;
   const std::vector<float> v = parseNumbers(text, "--detail", 0.0f, 100000.0f);
-  if (v.size() != 2 || v[1] < v[0]) throw SpeciesError(text, "--detail", "expected FULL,REDUCED metres with FULL <= REDUCED, e.g. 40,150");
-  return render::DetailDistances{v[0], v[1]};
+  if (v.size() < 2 || v.size() > 3 || v[1] < v[0] || (v.size() == 3 && v[2] < v[1])) {
+    throw SpeciesError(text, "--detail", "expected FULL,REDUCED[,FAR] metres, each at least the one before, e.g. 40,150,400");
+  }
+  return render::DetailDistances{v[0], v[1], v.size() == 3 ? v[2] : render::DetailDistances{}.far};
 }
 
 // Everything the options say, read once before anything is grown, so that bad input fails early.
@@ -111,7 +113,7 @@ struct ViewPlan {
 // Lavapipe tessellates the whole mesh of a large tree in seconds, so there the nearest trees already fake their
 // deepest level.
 void applyDeviceDefaults(const ViewOptions& o, const ViewPlan& plan, const vk::VulkanContext& context, ViewState& state) {
-  state.detail = plan.detail.value_or(context.isLavapipe() ? render::DetailDistances{0.0f, 15.0f} : render::DetailDistances{});
+  state.detail = plan.detail.value_or(context.isLavapipe() ? render::DetailDistances{0.0f, 15.0f, 60.0f} : render::DetailDistances{});
   if (o.maxTess <= 0.0f && context.isLavapipe()) state.settings.maxLevel = 16.0f;
 }
 
@@ -374,7 +376,7 @@ void addViewCommand(CLI::App& app, Action& action) {
   cmd->add_flag("--no-leaves", o->noLeaves, "Leave the leaves out");
   cmd->add_option("--leaf-lod", o->leafLod, "All leaves up to this distance (m), then thinning (0: all)")->check(Number(0.0, 10000.0))->capture_default_str();
   cmd->add_option("--shadow-leaves", o->shadowLeaves, "Leaf self-shadowing against this many leaves")->check(Whole(0, 4096))->capture_default_str();
-  cmd->add_option("--detail", o->detail, "FULL,REDUCED metres: whole mesh within FULL, deepest level faked within REDUCED, two beyond (default 40,150; lavapipe 0,15)");
+  cmd->add_option("--detail", o->detail, "FULL,REDUCED[,FAR] metres: whole mesh within FULL, deepest level faked within REDUCED, two beyond; beyond FAR trees drawn without the tessellator, their fake branches as a sketch (default 40,150,400; lavapipe 0,15,60)");
   cmd->add_option("--light", o->light, "Sun direction AZIMUTH,ELEVATION in degrees")->capture_default_str();
   cmd->add_option("--camera-path", o->cameraPath, "Scripted: cameras ex,ey,ez,tx,ty,tz[,fov], one per line, visited over --frames");
   cmd->add_option("--frames", o->frames, "Scripted: render this many frames, then exit (default with a path: 60)")->check(Whole(1, 100000));

@@ -21,7 +21,8 @@ void drawPanel(ViewState& state, const render::ForestFrame& frame, const render:
   ImGui::PlotLines("ms", state.frameTimes.data(), static_cast<int>(state.frameTimes.size()), static_cast<int>(state.frameIndex), nullptr,
                    0.0f, FLT_MAX, ImVec2(0, 60));
   ImGui::Text("triangles %llu, %u trees drawn, %u culled", static_cast<unsigned long long>(stats.triangles), frame.visible, frame.culled);
-  ImGui::Text("detail: %u full, %u one level faked, %u two", frame.perDetail[0], frame.perDetail[1], frame.perDetail[2]);
+  ImGui::Text("detail: %u full, %u one level faked, %u two (%u far)", frame.perDetail[0], frame.perDetail[1], frame.perDetail[2],
+              frame.far);
   render::RenderSettings& s = state.settings;
   int mode = static_cast<int>(s.mode);
   ImGui::Combo("mode", &mode, "flat\0pn\0acc\0");
@@ -44,6 +45,7 @@ void drawPanel(ViewState& state, const render::ForestFrame& frame, const render:
   s.shadowLeaves = static_cast<std::uint32_t>(shadow);
   ImGui::SliderFloat("full mesh within (m)", &state.detail.full, 0.0f, 300.0f);
   ImGui::SliderFloat("one level faked within (m)", &state.detail.reduced, 0.0f, 600.0f);
+  ImGui::SliderFloat("far beyond (m)", &state.detail.far, 0.0f, 1000.0f);
   ImGui::SliderFloat("sun azimuth", &state.lightAzimuth, -180.0f, 180.0f);
   ImGui::SliderFloat("sun elevation", &state.lightElevation, -10.0f, 90.0f);
   s.lightDirection = render::sunDirection(state.lightAzimuth, state.lightElevation);
