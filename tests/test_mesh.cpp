@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <map>
 
 #include "common/input_error.hpp"
@@ -12,6 +13,7 @@
 #include "mesh/mesh_checks.hpp"
 #include "mesh/tree_mesh.hpp"
 #include "patches/limit_reference.hpp"
+#include "species/species_io.hpp"
 #include "test_support.hpp"
 
 using namespace arbor;
@@ -311,4 +313,50 @@ TEST_CASE("a mesh past its quad limit is refused before it is built, naming what
   MeshOptions absurd;
   absurd.ringSpacing = 1e-300;  // would overflow an int of cross sections
   CHECK_THROWS_AS(buildTreeMesh(s, absurd), LimitError);
+}
+
+TEST_CASE("a tree's sketch runs joint to joint along every stem but the twigs, with far fewer segments", "[mesh][impostors]") {
+  const Skeleton s = grow(test::loadPreset("black-tupelo"), 1);
+  const std::vector<ImpostorSegment> fine = impostorSegments(s, 2);
+  const std::vector<ImpostorSegment> sketch = sketchSegments(s, 2, s.levels - 1);
+  std::size_t stems = 0, joints = 0;
+  for (const SkeletonStem& st : s.stems) {
+    if (st.level != 2) continue;
+    ++stems;
+    for (int n = st.firstNode; n < st.firstNode + st.nodeCount - 1; ++n) joints += s.nodes[static_cast<std::size_t>(n)].kind == NodeKind::Joint ? 1 : 0;
+  }
+  CHECK(sketch.size() == stems + joints);  // one segment up to each joint and one to the tip
+  CHECK(sketch.size() * 3 < fine.size());  // the tupelo: 9,990 against 37,374
+  for (const ImpostorSegment& g : sketch) CHECK(g.level == 2);
+  for (std::size_t i = 1; i < sketch.size(); ++i) {
+    // Within a stem each segment starts where the one before ended, and its bark runs on.
+    if (sketch[i].fromV > 0.0) {
+      CHECK(glm::distance(sketch[i].from, sketch[i - 1].to) < 1e-12);
+      CHECK(sketch[i].fromV == sketch[i - 1].toV);
+    }
+  }
+}
+
+TEST_CASE("every Arbaro species file grows and meshes to one closed piece with valid levels", "[mesh][real-data]") {
+  namespace fs = std::filesystem;
+  const fs::path dir = ARBOR_SPECIES_DIR;
+  if (!fs::is_directory(dir)) {
+    WARN("Arbaro's species files are not beside this checkout (" << dir << "); skipped");
+    return;
+  }
+  int count = 0;
+  for (const auto& e : fs::directory_iterator(dir)) {
+    if (e.path().extension() != ".xml") continue;
+    INFO(e.path());
+    const SpeciesParams p = loadSpeciesFile(e.path().string());
+    const Skeleton s = grow(p, 1);
+    const TreeMesh tree = buildTreeMesh(s);
+    const MeshTopologyReport r = checkTopology(tree.mesh);
+    CHECK(r.boundaryEdges == 0);
+    CHECK(r.nonManifoldEdges == 0);
+    CHECK(r.components == 1);
+    CHECK(*std::max_element(tree.mesh.level.begin(), tree.mesh.level.end()) < s.levels);  // wheat's _LEVEL held 232
+    ++count;
+  }
+  CHECK(count == 16);
 }
