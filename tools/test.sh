@@ -7,7 +7,9 @@ set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 bash "$root/tools/install-deps.sh"
 if [[ "${1:-}" == "--asan" ]]; then
-  cmake -S "$root" -B "$root/build-asan" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DARBOR_SANITIZE=ON
+  # -O1 -g1: sanitized code compiles in about half the time of -O2 -g and still runs at a useful speed.
+  cmake -S "$root" -B "$root/build-asan" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" \
+    -DARBOR_SANITIZE=ON
   cmake --build "$root/build-asan" -j"$(nproc)"
   # Leaks are checked in Arbor's code only: the Vulkan driver, LLVM and X11 keep their own allocations for the
   # process's life (tools/sanitizers/lsan.supp).
