@@ -133,3 +133,16 @@ TEST_CASE("a far tree drawn without the tessellator looks as ACC at factor 1, wi
   CHECK(far.gpu.triangles == tree.triangles);  // flat: two triangles per quad, nothing tessellated
   CHECK(tree.sketchCount * 3 < tree.impostorCount);
 }
+
+TEST_CASE("a forest whose distinct trees would pass its quad limit is refused before anything is grown", "[forest]") {
+  render::ForestOptions options;
+  options.species = {"black-tupelo"};
+  options.params = {test::loadPreset("black-tupelo")};
+  options.trees = 10;
+  options.seeds = 4;
+  options.maxQuads = 200'000;  // four tupelos of about 140,000 quads each, at three details
+  std::vector<std::string> progress;
+  CHECK_THROWS_WITH(render::Forest(test::vulkan(), options, [&](const std::string& line) { progress.push_back(line); }),
+                    Catch::Contains("4 distinct trees") && Catch::Contains("fewer species or --seeds"));
+  CHECK(progress.empty());  // refused from the estimates: nothing was grown
+}

@@ -18,6 +18,10 @@ double angleBetween(const Vec3& a, const Vec3& b);  // radians
 
 std::string tempPath(const std::string& name);  // in a per-run scratch directory
 
+// The Arbaro species files (*.xml) in `dir`, sorted; empty when the folder is not there (a checkout without
+// ../shared: the callers skip and say so).
+std::vector<std::string> arbaroSpeciesFiles(const std::string& dir);
+
 // A shell command's exit status and what it printed (add 2>&1 to the command for stderr too).
 struct CommandResult {
   int exitCode = -1;  // -1: it did not exit normally (killed by a signal)

@@ -4,10 +4,21 @@
 # Starts from the kept corpus (tests/fuzz/corpus/<target>/); new interesting inputs collect in
 # build-fuzz/corpus/<target>/, findings (crashes, hangs past 10 s, memory past 2 GB) in build-fuzz/findings/<target>/.
 # Exit status 1 when anything was found: copy the input into the kept corpus once it is fixed.
+#   bash tools/fuzz.sh --ci     what CI runs: a fixed seed and a fixed number of runs per target (about a minute
+#                               each here), so that the same code always gives the same verdict
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-seconds="${1:-60}"
-shift || true
+limit=()
+if [[ "${1:-}" == "--ci" ]]; then
+  shift
+  limit=(-seed=1)
+  ci=1
+else
+  ci=0
+  seconds="${1:-60}"
+  shift || true
+  limit=(-max_total_time="$seconds")
+fi
 targets=("$@")
 ((${#targets[@]})) || targets=(species_json species_xml camera_path events cli_values)
 
@@ -22,10 +33,16 @@ found=0
 for t in "${targets[@]}"; do
   work="$root/build-fuzz/corpus/$t" findings="$root/build-fuzz/findings/$t"
   mkdir -p "$work" "$findings"
-  echo "arbor fuzz: $t for ${seconds} s (kept corpus: $(ls "$root/tests/fuzz/corpus/$t" | wc -l) inputs)"
+  # CI: runs sized to about a minute each on two cores; growing trees makes the species targets slower per input.
+  if ((ci)); then
+    case "$t" in species_json) runs=20000 ;; species_xml) runs=20000 ;; *) runs=1000000 ;; esac
+    limit=(-seed=1 -runs="$runs")  # with -timeout=60 below: a slower machine must not turn a slow input into a finding
+    rm -rf "$work" && mkdir -p "$work"  # the same start every time
+  fi
+  echo "arbor fuzz: $t: ${limit[*]} (kept corpus: $(ls "$root/tests/fuzz/corpus/$t" | wc -l) inputs)"
   # A finding stops its target: it is to be looked at, not counted.
   if ! ASAN_OPTIONS=detect_leaks=1:allocator_may_return_null=1 UBSAN_OPTIONS=print_stacktrace=1 \
-      "$root/build-fuzz/tests/fuzz/fuzz_$t" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -malloc_limit_mb=2048 \
+      "$root/build-fuzz/tests/fuzz/fuzz_$t" "${limit[@]}" -timeout=$((ci ? 60 : 10)) -rss_limit_mb=2048 -malloc_limit_mb=2048 \
       -max_len=65536 -print_final_stats=1 -artifact_prefix="$findings/" "$work" "$root/tests/fuzz/corpus/$t" \
       > "$root/build-fuzz/fuzz-$t.log" 2>&1; then
     found=1

@@ -1,0 +1,9 @@
+#!/usr/bin/env bash
+# The long checks CI has no time for (about an hour and a half on two cores): the whole suite under ASan and
+# UBSan, then every fuzz target for ten minutes. Exit status: 0 only when both pass.
+set -uo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+status=0
+bash "$root/tools/test.sh" --asan || status=1
+bash "$root/tools/fuzz.sh" "${1:-600}" || status=1
+exit "$status"
