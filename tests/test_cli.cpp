@@ -95,6 +95,44 @@ TEST_CASE("species converts an Arbaro file to Arbor JSON that reads back", "[cli
   CHECK(g.exitCode == 0);
 }
 
+TEST_CASE("an Arbaro file keeps its own angles unless --angles natural, and the choice round-trips", "[cli]") {
+  const std::string xml = std::string(TEST_DATA_DIR) + "/small-arbaro.xml";
+  auto convert = [](const std::string& arguments, const std::string& name) {
+    const std::string out = arbor::test::tempPath(name);
+    const Result r = run("species " + arguments + " --out " + out);
+    INFO(r.output);
+    REQUIRE(r.exitCode == 0);
+    return out;
+  };
+  const std::string classic = convert(xml, "angles-file.json");
+  CHECK(nlohmann::json::parse(arbor::readFile(classic))["AngleRule"] == "classic");
+  CHECK(nlohmann::json::parse(arbor::readFile(convert(xml + " --angles file", "angles-file2.json")))["AngleRule"] == "classic");
+  const std::string natural = convert(xml + " --angles natural", "angles-natural.json");
+  CHECK(nlohmann::json::parse(arbor::readFile(natural))["AngleRule"] == "natural");
+  // JSON keeps its own field under --angles file; --angles natural overrides it.
+  CHECK(nlohmann::json::parse(arbor::readFile(convert(classic, "angles-again.json")))["AngleRule"] == "classic");
+  CHECK(nlohmann::json::parse(arbor::readFile(convert(natural, "angles-again2.json")))["AngleRule"] == "natural");
+  CHECK(nlohmann::json::parse(arbor::readFile(convert(classic + " --angles natural", "angles-forced.json")))["AngleRule"] == "natural");
+  // The tree grown from the file with --angles natural is the tree of the natural JSON, not the file's.
+  const std::string a = arbor::test::tempPath("angles-a.json"), b = arbor::test::tempPath("angles-b.json"),
+                    c = arbor::test::tempPath("angles-c.json");
+  REQUIRE(run("generate " + xml + " --quiet --angles natural --out " + a).exitCode == 0);
+  REQUIRE(run("generate " + natural + " --quiet --out " + b).exitCode == 0);
+  REQUIRE(run("generate " + xml + " --quiet --out " + c).exitCode == 0);
+  auto nodes = [](const std::string& path) { return nlohmann::json::parse(arbor::readFile(path))["nodes"]; };
+  CHECK(nodes(a) == nodes(b));
+  CHECK(nodes(a) != nodes(c));
+}
+
+TEST_CASE("every command that loads species takes --angles", "[cli]") {
+  for (const char* command : {"generate", "species", "bench generate", "bench mesh", "bench tess", "bench leaves", "render", "view",
+                              "accuracy"}) {
+    const Result r = run(std::string(command) + " --help");
+    INFO(command);
+    CHECK_THAT(r.output, Catch::Contains("--angles") && Catch::Contains("natural|file"));
+  }
+}
+
 TEST_CASE("generate writes a tree mesh as OBJ that reads back closed", "[cli][mesh]") {
   const std::string out = arbor::test::tempPath("palm.obj");
   const Result r = run("generate palm --out " + out);

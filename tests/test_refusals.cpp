@@ -172,10 +172,15 @@ TEST_CASE("command-line numbers must be finite, in range and whole where they co
       {"bench tess palm --factors ,,", "--factors"},
       {"bench tess palm --modes acc,", "--modes"},
       {"bench leaves palm --counts nan", "--counts"},
+      {"generate palm --angles murray --out " + out, "--angles"},
+      {"species palm --angles classic", "--angles"},
+      {"render palm --angles '' --out " + png, "--angles"},
   };
   for (const auto& [arguments, field] : cases) {
     INFO(arguments);
-    checkRefused(run(arguments), {field});
+    const Result r = run(arguments);
+    checkRefused(r, {field});
+    if (field == "--angles") checkRefused(r, {"allowed natural or file"});
   }
   CHECK_FALSE(fs::exists(out));
   CHECK_FALSE(fs::exists(png));

@@ -149,6 +149,9 @@ TEST_CASE("Arbaro XML imports with level prefixes and leaf angles", "[species][x
   CHECK(p.leafDownAngle == 35);
   CHECK(p.leafRotate == -90);
   CHECK(p.leafShape == LeafKind::Broad);
+  // The file's own DownAngle and SplitAngle, so an Arbaro tree keeps its shape; and so written to JSON.
+  CHECK(p.angleRule == AngleRule::Classic);
+  CHECK(readSpeciesJson(writeSpeciesJson(p), "converted.json").angleRule == AngleRule::Classic);
   // Absent parameters are reported, never silent; Arbaro-only ones are listed as ignored.
   CHECK(std::find(notes.defaulted.begin(), notes.defaulted.end(), "PruneRatio=0") != notes.defaulted.end());
   CHECK(std::find(notes.ignored.begin(), notes.ignored.end(), "Smooth") != notes.ignored.end());

@@ -47,7 +47,7 @@ const std::array kTreeFields = {
               "E of the natural rules: r^E = r_p^E + r_s^E at every branch point.", &S::treeShapeExponent},
     TreeField{"AngleRule", nullptr, FieldType::AngleRule, 0, 0, false, kNone,
               "\"natural\": deviation angles from Murray's equilibrium; \"classic\": DownAngle and "
-              "SplitAngle from this file."},
+              "SplitAngle from this file (the default of an Arbaro XML import)."},
     TreeField{"TrunkScale", "0Scale", FieldType::Real, 0.01, 100, false, 1,
               "Extra scale of the trunk radius.", &S::trunkScale},
     TreeField{"TrunkScaleV", "0ScaleV", FieldType::Real, 0, 100, false, 0,

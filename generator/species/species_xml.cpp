@@ -87,7 +87,7 @@ SpeciesParams readSpeciesXml(const std::string& text, const std::string& file, I
   const char* speciesName = species->Attribute("name");
   p.name = speciesName && *speciesName ? speciesName : "unnamed";
   requireSpeciesName(p.name, file, "name");
-  p.angleRule = AngleRule::Natural;
+  p.angleRule = AngleRule::Classic;  // the file's own DownAngle and SplitAngle: an Arbaro tree keeps its shape
 
   ImportNotes local;
   ImportNotes& out = notes ? *notes : local;

@@ -34,13 +34,33 @@ std::vector<std::string> presetNames() {
   return names;
 }
 
-SpeciesParams loadSpeciesArgument(const std::string& presetOrFile, ImportNotes* notes) {
-  if (inputExists(presetOrFile)) return loadSpeciesFile(presetOrFile, notes);
+void addAnglesOption(CLI::App* cmd, AngleChoice& angles) {
+  cmd->add_option_function<std::string>(
+         "--angles", [&angles](const std::string& text) { angles = text == "natural" ? AngleChoice::Natural : AngleChoice::File; },
+         "Branch and split angles: 'file' keeps the species file's own (Arbaro XML: its DownAngle and SplitAngle; "
+         "JSON: its AngleRule), 'natural' uses Murray's angles from the radii (default: file)")
+      ->check(CLI::Validator(
+          [](std::string& text) -> std::string {
+            return text == "natural" || text == "file" ? "" : "'" + text + "': allowed natural or file";
+          },
+          "natural|file"));
+}
+
+namespace {
+
+SpeciesParams withAngles(SpeciesParams p, AngleChoice angles) {
+  if (angles == AngleChoice::Natural) p.angleRule = AngleRule::Natural;
+  return p;
+}
+
+}  // namespace
+
+SpeciesParams loadSpeciesArgument(const std::string& presetOrFile, ImportNotes* notes, AngleChoice angles) {
+  if (inputExists(presetOrFile)) return withAngles(loadSpeciesFile(presetOrFile, notes), angles);
   const fs::path preset = fs::path(assetDirectory()) / "presets" / (presetOrFile + ".json");
   std::error_code ec;
   if (presetOrFile.find('/') == std::string::npos && fs::is_regular_file(preset, ec)) {
-    SpeciesParams p = loadSpeciesFile(preset.string(), notes);
-    return p;
+    return withAngles(loadSpeciesFile(preset.string(), notes), angles);
   }
   std::string list;
   for (const std::string& name : presetNames()) list += (list.empty() ? "" : ", ") + name;

@@ -1,5 +1,6 @@
 #pragma once
 // Where presets and other assets live: $ARBOR_ASSETS, the source tree's assets/, or ../assets beside the binary.
+#include <CLI/CLI.hpp>
 #include <string>
 #include <vector>
 
@@ -13,8 +14,16 @@ std::string assetDirectory();
 // Preset names ("black-tupelo", ...) from assets/presets/*.json, sorted.
 std::vector<std::string> presetNames();
 
+// Which angles a loaded species follows: the file's own (an Arbaro XML file's DownAngle and SplitAngle, a JSON
+// file's AngleRule) or Murray's natural angles whatever the file says.
+enum class AngleChoice { File, Natural };
+
+// --angles natural|file on a command that loads species; a bad value is a usage error (exit 2) naming both.
+void addAnglesOption(CLI::App* cmd, AngleChoice& angles);
+
 // A path that exists is read as a species file; otherwise the argument must name a preset.
 // Throws SpeciesError naming the argument and the presets on offer.
-SpeciesParams loadSpeciesArgument(const std::string& presetOrFile, ImportNotes* notes = nullptr);
+SpeciesParams loadSpeciesArgument(const std::string& presetOrFile, ImportNotes* notes = nullptr,
+                                  AngleChoice angles = AngleChoice::File);
 
 }  // namespace arbor::cli

@@ -17,6 +17,7 @@ namespace arbor::cli {
 namespace {
 
 struct AccuracyOptions {
+  AngleChoice angles = AngleChoice::File;
   std::vector<std::string> species;
   std::uint64_t seed = 1;
   int levels = 0;
@@ -36,7 +37,7 @@ int runAccuracy(const AccuracyOptions& o) {
     GrowthOptions growth;
     growth.seed = o.seed;
     growth.levels = o.levels;
-    const TreeMesh tree = buildTreeMesh(generateSkeleton(loadSpeciesArgument(name), growth));
+    const TreeMesh tree = buildTreeMesh(generateSkeleton(loadSpeciesArgument(name, nullptr, o.angles), growth));
     const PatchSet set = buildPatches(tree.mesh);
     const AccAccuracy a = measureAccAccuracy(tree.mesh, set, o.maxPatches, o.samples);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -55,6 +56,7 @@ void addAccuracyCommand(CLI::App& app, Action& action) {
   CLI::App* cmd = app.add_subcommand(
       "accuracy", "Distance of ACC's patches from the exact limit surface (OpenSubdiv), relative to the branch radius.");
   cmd->add_option("species", o->species, "Presets or species files (default: every preset)");
+  addAnglesOption(cmd, o->angles);
   cmd->add_option("--seed", o->seed, "Random seed")->check(Seed())->capture_default_str();
   cmd->add_option("--levels", o->levels, "Stem levels (default: each species' Levels)")->check(Whole(1, 8));
   cmd->add_option("--max-patches", o->maxPatches, "Measure every k-th patch so that at most this many are (0: all)")

@@ -16,6 +16,7 @@ namespace arbor::cli {
 namespace {
 
 struct BenchOptions {
+  AngleChoice angles = AngleChoice::File;
   std::vector<std::string> species;
   int repeat = 5;
   std::uint64_t seed = 1;
@@ -27,7 +28,7 @@ int runBenchGenerate(const BenchOptions& o) {
   std::printf("%-22s %6s %9s %9s %9s %10s %10s\n", "species", "levels", "stems", "nodes", "leaves", "median ms",
               "min ms");
   for (std::size_t i = 0; i < names.size(); ++i) {
-    const SpeciesParams params = loadSpeciesArgument(names[i]);
+    const SpeciesParams params = loadSpeciesArgument(names[i], nullptr, o.angles);
     GrowthOptions growth;
     growth.seed = o.seed;
     growth.levels = o.levels;
@@ -56,7 +57,7 @@ int runBenchMesh(const BenchOptions& o) {
   std::printf("%-22s %6s %9s %9s %8s %11s %9s %10s %10s\n", "species", "levels", "quads", "patches", "regular",
               "skeleton ms", "mesh ms", "patches ms", "total ms");
   for (const std::string& name : names) {
-    const SpeciesParams params = loadSpeciesArgument(name);
+    const SpeciesParams params = loadSpeciesArgument(name, nullptr, o.angles);
     GrowthOptions growth;
     growth.seed = o.seed;
     growth.levels = o.levels;
@@ -97,6 +98,7 @@ void addBenchCommand(CLI::App& app, Action& action) {
   auto o = std::make_shared<BenchOptions>();
   CLI::App* gen = bench->add_subcommand("generate", "Time skeleton generation per preset (one thread).");
   gen->add_option("species", o->species, "Presets or species files (default: every preset)");
+  addAnglesOption(gen, o->angles);
   gen->add_option("--repeat", o->repeat, "Runs per species; the median and minimum are printed")
       ->check(Whole(1, 1000))
       ->capture_default_str();
@@ -107,6 +109,7 @@ void addBenchCommand(CLI::App& app, Action& action) {
   auto m = std::make_shared<BenchOptions>();
   CLI::App* mesh = bench->add_subcommand("mesh", "Time parameters -> skeleton -> mesh -> patches per preset (one thread).");
   mesh->add_option("species", m->species, "Presets or species files (default: every preset)");
+  addAnglesOption(mesh, m->angles);
   mesh->add_option("--repeat", m->repeat, "Runs per species; medians are printed")->check(Whole(1, 1000))->capture_default_str();
   mesh->add_option("--seed", m->seed, "Random seed")->check(Seed())->capture_default_str();
   mesh->add_option("--levels", m->levels, "Stem levels (default: each species' Levels)")->check(Whole(1, 8));

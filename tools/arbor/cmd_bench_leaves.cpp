@@ -21,6 +21,7 @@ namespace arbor::cli {
 namespace {
 
 struct BenchLeavesOptions {
+  AngleChoice angles = AngleChoice::File;
   std::string species = "quaking-aspen";
   std::uint64_t seed = 1;
   std::string counts = "10000,50000,200000";
@@ -53,7 +54,7 @@ int runBenchLeaves(const BenchLeavesOptions& o) {
 
   // The mesh keeps the species' levels; more levels are grown (the same tree below, breadth-first) until the
   // deepest carries enough leaves for the largest count.
-  const SpeciesParams params = loadSpeciesArgument(o.species);
+  const SpeciesParams params = loadSpeciesArgument(o.species, nullptr, o.angles);
   const std::uint32_t most = *std::max_element(counts.begin(), counts.end());
   GrowthOptions growth;
   growth.seed = o.seed;
@@ -142,6 +143,7 @@ void addBenchLeavesCommand(CLI::App& bench, Action& action) {
   auto o = std::make_shared<BenchLeavesOptions>();
   CLI::App* cmd = bench.add_subcommand("leaves", "Frame time against leaves drawn, with and without self-shadowing (Vulkan).");
   cmd->add_option("species", o->species, "Preset or species file (grown to more levels until it has enough leaves)")->capture_default_str();
+  addAnglesOption(cmd, o->angles);
   cmd->add_option("--seed", o->seed, "Random seed")->check(Seed())->capture_default_str();
   cmd->add_option("--counts", o->counts, "Leaves drawn per row, comma-separated (the first of the random order)")->capture_default_str();
   cmd->add_option("--shadow-leaves", o->shadows, "Self-shadowing settings per count, comma-separated, 0 to 4096 (0: off)")->capture_default_str();

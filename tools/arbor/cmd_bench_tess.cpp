@@ -27,6 +27,7 @@ namespace arbor::cli {
 namespace {
 
 struct BenchTessOptions {
+  AngleChoice angles = AngleChoice::File;
   std::string species = "black-tupelo";
   std::uint64_t seed = 1;
   int levels = 0;
@@ -127,7 +128,7 @@ int runBenchTess(const BenchTessOptions& o) {
   csv << "mode,factor,adaptive_px,displacement,triangles,cpu_ms_median,cpu_ms_min,cpu_ms_max,gpu_ms_median,gpu_ms_min,"
          "gpu_ms_max,mtriangles_per_s,share_of_ceiling,gpu_bytes\n";
 
-  const SpeciesParams params = loadSpeciesArgument(o.species);
+  const SpeciesParams params = loadSpeciesArgument(o.species, nullptr, o.angles);
   vk::VulkanContext context(vulkanOptions(o.validation, o.device));
   render::RenderSession session(context, width, height, VK_SAMPLE_COUNT_1_BIT, render::loadTreeTextures(assetDirectory()));
   const float aspect = static_cast<float>(width) / static_cast<float>(height);
@@ -332,6 +333,7 @@ void addBenchTessCommand(CLI::App& bench, Action& action) {
   auto o = std::make_shared<BenchTessOptions>();
   CLI::App* cmd = bench.add_subcommand("tess", "Frame time and triangles generated per mode and tessellation factor (Vulkan).");
   cmd->add_option("species", o->species, "Preset or species file")->capture_default_str();
+  addAnglesOption(cmd, o->angles);
   cmd->add_option("--seed", o->seed, "Random seed")->check(Seed())->capture_default_str();
   cmd->add_option("--levels", o->levels, "Stem levels (default: the species' Levels)")->check(Whole(1, 8));
   cmd->add_option("--modes", o->modes, "Comma-separated: flat, pn, acc, acc+disp, pn+disp")->capture_default_str();

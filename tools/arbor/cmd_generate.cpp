@@ -23,6 +23,7 @@ namespace arbor::cli {
 namespace {
 
 struct GenerateOptions {
+  AngleChoice angles = AngleChoice::File;
   std::string species;
   std::uint64_t seed = 1;
   int levels = 0;
@@ -64,7 +65,7 @@ int runGenerate(const GenerateOptions& o) {
     throw SpeciesError(o.out, "--out", "--subdivide and --triangles apply to meshes (.obj, .gltf, .glb), not to a skeleton");
   }
   ImportNotes notes;
-  const SpeciesParams params = loadSpeciesArgument(o.species, &notes);
+  const SpeciesParams params = loadSpeciesArgument(o.species, &notes, o.angles);
   if (!o.quiet) printNotes(o.species, notes);
 
   GrowthOptions growth;
@@ -137,6 +138,7 @@ void addGenerateCommand(CLI::App& app, Action& action) {
   CLI::App* cmd = app.add_subcommand("generate", "Grow a tree from a preset or species file and write its skeleton or mesh.");
   cmd->add_option("species", o->species, "Preset name (see 'arbor species --list') or a .json/.xml species file")
       ->required();
+  addAnglesOption(cmd, o->angles);
   cmd->add_option("--seed", o->seed, "Random seed; the same seed gives byte-identical output")->check(Seed())->capture_default_str();
   cmd->add_option("--levels", o->levels, "Stem levels to grow (default: the species' Levels)")
       ->check(Whole(1, 8));

@@ -23,6 +23,7 @@ namespace arbor::cli {
 namespace {
 
 struct RenderOptions {
+  AngleChoice angles = AngleChoice::File;
   std::string species;
   std::uint64_t seed = 1;
   int levels = 0;
@@ -71,7 +72,7 @@ int runRender(const RenderOptions& o) {
   if (!endsWith(o.out, ".png")) throw SpeciesError(o.out, "--out", "the picture is written as PNG; use a .png name");
   requireOutputFile(o.out);
 
-  const SpeciesParams params = loadSpeciesArgument(o.species);
+  const SpeciesParams params = loadSpeciesArgument(o.species, nullptr, o.angles);
   // The mesh keeps --levels (or the species'); impostor levels grow beyond them (breadth-first: the same tree
   // below), are drawn as fake branches, and carry the leaves.
   const int meshLevels = o.levels > 0 ? o.levels : params.levels;
@@ -154,6 +155,7 @@ void addRenderCommand(CLI::App& app, Action& action) {
   auto o = std::make_shared<RenderOptions>();
   CLI::App* cmd = app.add_subcommand("render", "Render a tree offscreen with GPU tessellation (Vulkan) to a PNG.");
   cmd->add_option("species", o->species, "Preset name or .json/.xml species file")->required();
+  addAnglesOption(cmd, o->angles);
   cmd->add_option("--seed", o->seed, "Random seed")->check(Seed())->capture_default_str();
   cmd->add_option("--levels", o->levels, "Stem levels to grow and mesh (default: the species' Levels)")->check(Whole(1, 8));
   cmd->add_option("--mode", o->mode, "flat (coarse mesh), pn (PN-triangles), acc (Catmull-Clark approximation)")

@@ -13,6 +13,7 @@ namespace arbor::cli {
 namespace {
 
 struct SpeciesOptions {
+  AngleChoice angles = AngleChoice::File;
   std::string species;
   std::string out;
   bool list = false;
@@ -33,7 +34,7 @@ int runSpecies(const SpeciesOptions& o) {
   if (!o.random.empty() && !o.species.empty()) throw SpeciesError(o.species, "--random", "give either a species or --random SEED, not both");
   if (!o.out.empty()) requireOutputFile(o.out);
   ImportNotes notes;
-  const SpeciesParams params = o.random.empty() ? loadSpeciesArgument(o.species, &notes) : randomSpecies(std::stoull(o.random));
+  const SpeciesParams params = o.random.empty() ? loadSpeciesArgument(o.species, &notes, o.angles) : randomSpecies(std::stoull(o.random));
   const std::string json = writeSpeciesJson(params);
   if (o.out.empty()) {
     std::fputs(json.c_str(), stdout);
@@ -51,6 +52,7 @@ void addSpeciesCommand(CLI::App& app, Action& action) {
   auto o = std::make_shared<SpeciesOptions>();
   CLI::App* cmd = app.add_subcommand("species", "List presets, or print / convert a species file as Arbor JSON.");
   cmd->add_option("species", o->species, "Preset name or .json/.xml species file (omit to list presets)");
+  addAnglesOption(cmd, o->angles);
   cmd->add_option("--out", o->out, "Write the species as Arbor JSON to this file instead of printing it");
   cmd->add_flag("--list", o->list, "List the presets");
   cmd->add_option("--random", o->random, "Write a random species: every field drawn evenly from its documented range (stress tests)")

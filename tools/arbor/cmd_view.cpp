@@ -31,6 +31,7 @@ namespace {
 namespace fs = std::filesystem;
 
 struct ViewOptions {
+  AngleChoice angles = AngleChoice::File;
   std::vector<std::string> species{"black-tupelo"};
   std::uint32_t forest = 1;
   std::uint32_t seeds = 2;
@@ -342,7 +343,7 @@ int runView(const ViewOptions& o) {
   parseSize(o.size, plan.width, plan.height);
   plan.detail = parseDetail(o.detail);
   plan.events = parseEvents(o.events);
-  for (const std::string& name : o.species) plan.params.push_back(loadSpeciesArgument(name));
+  for (const std::string& name : o.species) plan.params.push_back(loadSpeciesArgument(name, nullptr, o.angles));
   if (!o.cameraPath.empty()) plan.path = readCameraPath(o.cameraPath);
   // Scripted: a camera path or a frame count; without a display the scene goes to PNG files instead.
   const bool scripted = !o.cameraPath.empty() || o.frames > 0;
@@ -360,6 +361,7 @@ void addViewCommand(CLI::App& app, Action& action) {
   auto o = std::make_shared<ViewOptions>();
   CLI::App* cmd = app.add_subcommand("view", "Walk through a generated forest in a window (Vulkan); offscreen PNGs where no display is.");
   cmd->add_option("species", o->species, "Presets or species files (default: black-tupelo)");
+  addAnglesOption(cmd, o->angles);
   cmd->add_option("--forest", o->forest, "Trees to place (1: one tree, orbit camera)")->check(Whole(1, 5000))->capture_default_str();
   cmd->add_option("--seeds", o->seeds, "Distinct seeds per species (each grown once, then instanced)")->check(Whole(1, 16))->capture_default_str();
   cmd->add_option("--seed", o->seed, "First seed; also places the trees")->check(Seed())->capture_default_str();
