@@ -1,0 +1,192 @@
+#include "self_intersection.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <thread>
+
+#include "quad_bvh.hpp"
+#include "stem_capsules.hpp"
+
+namespace arbor {
+
+namespace {
+
+// A point within this many radii of both stems' axes lies where the skeleton puts wood of both: the surface
+// sits at ~1.52 r (limit compensation); the rest allows for bands drawn as chords between rings.
+constexpr double kWoodReach = 1.75;
+// Fewer quads than this are checked on one thread: starting threads would cost more than it saves.
+constexpr std::size_t kThreadsFrom = 20000;
+
+QuadCorners cornersOf(const QuadMesh& mesh, std::uint32_t f) {
+  QuadCorners c;
+  c.index = mesh.quads[f];
+  for (std::size_t k = 0; k < 4; ++k) c.p[k] = Vec3(mesh.positions[c.index[k]]);
+  return c;
+}
+
+QuadBox boxOf(const QuadMesh& mesh, std::uint32_t f) {
+  const auto& q = mesh.quads[f];
+  QuadBox b{mesh.positions[q[0]], mesh.positions[q[0]]};
+  for (std::size_t k = 1; k < 4; ++k) {
+    b.lo = glm::min(b.lo, mesh.positions[q[k]]);
+    b.hi = glm::max(b.hi, mesh.positions[q[k]]);
+  }
+  return b;
+}
+
+void testPair(const QuadMesh& mesh, std::uint32_t a, std::uint32_t b, std::vector<QuadPairHit>& hits) {
+  if (auto x = quadsMeet(cornersOf(mesh, a), cornersOf(mesh, b))) {
+    QuadPairHit h;
+    h.a = a;
+    h.b = b;
+    h.point = *x;
+    h.contact = quadContact(mesh.quads[a], mesh.quads[b]);
+    hits.push_back(h);
+  }
+}
+
+void sortHits(std::vector<QuadPairHit>& hits) {
+  std::sort(hits.begin(), hits.end(), [](const QuadPairHit& x, const QuadPairHit& y) {
+    return x.a != y.a ? x.a < y.a : x.b < y.b;
+  });
+}
+
+StemRelation relationOf(const Skeleton& skeleton, int a, int b) {
+  if (a < 0 || b < 0 || a >= static_cast<int>(skeleton.stems.size()) || b >= static_cast<int>(skeleton.stems.size()))
+    return StemRelation::Hub;
+  if (a == b) return StemRelation::Same;
+  const SkeletonStem& sa = skeleton.stems[static_cast<std::size_t>(a)];
+  const SkeletonStem& sb = skeleton.stems[static_cast<std::size_t>(b)];
+  if (sa.cloneOf == b || sb.cloneOf == a) return StemRelation::CloneSource;
+  if ((sa.parentStem == b && sa.cloneOf < 0) || (sb.parentStem == a && sb.cloneOf < 0)) return StemRelation::ParentChild;
+  if (sa.attachNode >= 0 && sa.attachNode == sb.attachNode) return StemRelation::Siblings;
+  return StemRelation::Other;
+}
+
+SelfIntersectionReport summarise(std::vector<QuadPairHit> hits, std::size_t quads, bool classified) {
+  SelfIntersectionReport r;
+  r.quads = quads;
+  r.pairs = hits.size();
+  r.classified = classified;
+  for (const QuadPairHit& h : hits) {
+    r.folds += h.contact == QuadContact::Edge ? 1 : 0;
+    r.neckCrossings += h.relation == StemRelation::ParentChild || h.relation == StemRelation::CloneSource ? 1 : 0;
+    r.skeletonMade += h.origin == PairOrigin::Skeleton ? 1 : 0;
+    r.meshMade += h.origin == PairOrigin::Mesh ? 1 : 0;
+  }
+  r.hits = std::move(hits);
+  return r;
+}
+
+double millisecondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
+std::vector<QuadPairHit> findIntersectingQuads(const QuadMesh& mesh) {
+  const auto n = static_cast<std::uint32_t>(mesh.quads.size());
+  std::vector<QuadBox> boxes(n);
+  for (std::uint32_t f = 0; f < n; ++f) boxes[f] = boxOf(mesh, f);
+  const QuadBvh bvh = buildQuadBvh(boxes);
+  const unsigned threads = n < kThreadsFrom ? 1u : std::clamp(std::thread::hardware_concurrency(), 1u, 16u);
+  // Many more tasks than threads, taken in turn: subtrees differ widely in work.
+  const std::vector<NodePair> tasks = splitOverlapTasks(bvh, threads == 1 ? 1 : 64 * threads);
+  std::atomic<std::size_t> next{0};
+  std::vector<std::vector<QuadPairHit>> found(threads);
+  auto work = [&](unsigned t) {
+    for (std::size_t k = next++; k < tasks.size(); k = next++) {
+      forEachOverlappingPair(bvh, tasks[k], [&](std::uint32_t a, std::uint32_t b) {
+        testPair(mesh, std::min(a, b), std::max(a, b), found[t]);
+      });
+    }
+  };
+  if (threads == 1) {
+    work(0);
+  } else {
+    std::vector<std::thread> pool;
+    for (unsigned t = 0; t < threads; ++t) pool.emplace_back(work, t);
+    for (std::thread& t : pool) t.join();
+  }
+  std::vector<QuadPairHit> hits;
+  for (auto& f : found) hits.insert(hits.end(), f.begin(), f.end());
+  sortHits(hits);
+  return hits;
+}
+
+std::vector<QuadPairHit> findIntersectingQuadsBruteForce(const QuadMesh& mesh) {
+  const auto n = static_cast<std::uint32_t>(mesh.quads.size());
+  std::vector<QuadBox> boxes(n);
+  for (std::uint32_t f = 0; f < n; ++f) boxes[f] = boxOf(mesh, f);
+  std::vector<QuadPairHit> hits;
+  for (std::uint32_t a = 0; a < n; ++a)
+    for (std::uint32_t b = a + 1; b < n; ++b)
+      if (boxes[a].overlaps(boxes[b])) testPair(mesh, a, b, hits);
+  return hits;
+}
+
+SelfIntersectionReport checkSelfIntersections(const QuadMesh& mesh) {
+  const auto start = std::chrono::steady_clock::now();
+  SelfIntersectionReport r = summarise(findIntersectingQuads(mesh), mesh.quads.size(), false);
+  r.milliseconds = millisecondsSince(start);
+  return r;
+}
+
+SelfIntersectionReport checkSelfIntersections(const TreeMesh& tree, const Skeleton& skeleton) {
+  const auto start = std::chrono::steady_clock::now();
+  std::vector<QuadPairHit> hits = findIntersectingQuads(tree.mesh);
+  const std::vector<std::vector<Capsule>> capsules = stemCapsules(skeleton);
+  for (QuadPairHit& h : hits) {
+    h.stemA = h.a < tree.quadStem.size() ? tree.quadStem[h.a] : -1;
+    h.stemB = h.b < tree.quadStem.size() ? tree.quadStem[h.b] : -1;
+    h.relation = relationOf(skeleton, h.stemA, h.stemB);
+    if (h.relation != StemRelation::Hub) {
+      h.reachA = stemReach(capsules[static_cast<std::size_t>(h.stemA)], h.point);
+      h.reachB = stemReach(capsules[static_cast<std::size_t>(h.stemB)], h.point);
+    }
+    // Both stems' skeletons must reach the point: then the branches themselves cross there.
+    const bool wood = h.contact != QuadContact::Edge && h.relation != StemRelation::Hub &&
+                      h.relation != StemRelation::Same && h.reachA <= kWoodReach && h.reachB <= kWoodReach;
+    h.origin = wood ? PairOrigin::Skeleton : PairOrigin::Mesh;
+  }
+  SelfIntersectionReport r = summarise(std::move(hits), tree.mesh.quads.size(), true);
+  r.milliseconds = millisecondsSince(start);
+  return r;
+}
+
+std::size_t meshMadeIntersections(const TreeMesh& tree, const Skeleton& skeleton) {
+  return checkSelfIntersections(tree, skeleton).meshMade;
+}
+
+const char* pairOriginName(PairOrigin origin) {
+  switch (origin) {
+    case PairOrigin::Skeleton: return "skeleton";
+    case PairOrigin::Mesh: return "mesh";
+    case PairOrigin::Unclassified: break;
+  }
+  return "unclassified";
+}
+
+const char* stemRelationName(StemRelation relation) {
+  switch (relation) {
+    case StemRelation::Same: return "same stem";
+    case StemRelation::ParentChild: return "parent-child";
+    case StemRelation::CloneSource: return "clone-source";
+    case StemRelation::Siblings: return "siblings";
+    case StemRelation::Other: return "other";
+    case StemRelation::Hub: break;
+  }
+  return "hub";
+}
+
+const char* quadContactName(QuadContact contact) {
+  switch (contact) {
+    case QuadContact::Vertex: return "vertex";
+    case QuadContact::Edge: return "edge";
+    case QuadContact::Apart: break;
+  }
+  return "apart";
+}
+
+}  // namespace arbor

@@ -1,0 +1,63 @@
+#pragma once
+// Every pair of quads of one mesh that intersect (beyond the corners and edges they share), found over a
+// bounding-volume hierarchy, and whether each was made by the skeleton (Weber-Penn lets branches cross) or
+// by the mesher (necks through their parent, folds, bands cutting others): the latter are bugs.
+#include <cstdint>
+#include <vector>
+
+#include "growth/skeleton.hpp"
+#include "quad_contact.hpp"
+#include "quad_mesh.hpp"
+#include "tree_mesh.hpp"
+
+namespace arbor {
+
+enum class PairOrigin : std::uint8_t { Unclassified, Skeleton, Mesh };
+
+// How the two quads' stems are related (Hub: one of them belongs to no stem, the root hub or an OBJ).
+enum class StemRelation : std::uint8_t { Hub, Same, ParentChild, CloneSource, Siblings, Other };
+
+struct QuadPairHit {
+  std::uint32_t a = 0, b = 0;  // quad indices, a < b
+  int stemA = -1, stemB = -1;  // -1: no stem (hub, or no skeleton given)
+  Vec3 point{0.0};             // a point where the two meet
+  QuadContact contact = QuadContact::Apart;
+  PairOrigin origin = PairOrigin::Unclassified;
+  StemRelation relation = StemRelation::Hub;
+  double reachA = 0, reachB = 0;  // the point's distance from each stem's skeleton axis, in its radii there
+};
+
+struct SelfIntersectionReport {
+  std::size_t quads = 0;
+  std::size_t pairs = 0;
+  std::size_t skeletonMade = 0;
+  std::size_t meshMade = 0;
+  std::size_t folds = 0;          // pairs sharing an edge
+  std::size_t neckCrossings = 0;  // a child's quad against its own parent's (or a clone's against its source's)
+  bool classified = false;        // false for a bare mesh: origins unknown
+  double milliseconds = 0;
+  std::vector<QuadPairHit> hits;  // sorted by (a, b)
+};
+
+// All intersecting pairs over a BVH of the quads' boxes; origins left Unclassified. Runs on every core.
+std::vector<QuadPairHit> findIntersectingQuads(const QuadMesh& mesh);
+
+// The same by testing every pair (O(n^2)): the reference the BVH is tested against.
+std::vector<QuadPairHit> findIntersectingQuadsBruteForce(const QuadMesh& mesh);
+
+// A bare mesh (an OBJ file): pairs, folds and time; nothing classified.
+SelfIntersectionReport checkSelfIntersections(const QuadMesh& mesh);
+
+// A tree's mesh with its skeleton: each pair classified, skeleton-made when the point lies within both
+// stems' capsules (past where each leaves the stem it grows from), mesh-made otherwise; folds and pairs
+// within one stem are always mesh-made.
+SelfIntersectionReport checkSelfIntersections(const TreeMesh& tree, const Skeleton& skeleton);
+
+// The number the mesher must bring to 0: pairs of quads that intersect where the skeleton does not.
+std::size_t meshMadeIntersections(const TreeMesh& tree, const Skeleton& skeleton);
+
+const char* pairOriginName(PairOrigin origin);
+const char* stemRelationName(StemRelation relation);
+const char* quadContactName(QuadContact contact);
+
+}  // namespace arbor

@@ -1,0 +1,74 @@
+#include "stem_capsules.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <glm/geometric.hpp>
+
+namespace arbor {
+
+namespace {
+
+// The mesh's corners sit at r / 0.657 (MeshOptions::limitCompensation): a stem's surface reaches ~1.52 r.
+constexpr double kSurfaceReach = 1.6;
+// A child nearly parallel to its parent would never clear it: cap the sine (~14 degrees).
+constexpr double kMinSine = 0.25;
+
+}  // namespace
+
+double capsuleReach(const Capsule& c, const Vec3& x) {
+  const Vec3 axis = c.b - c.a;
+  const double len2 = glm::dot(axis, axis);
+  double t = len2 > 0.0 ? glm::dot(x - c.a, axis) / len2 : 0.0;
+  if (t < 0.0 && c.flatStart) return std::numeric_limits<double>::infinity();
+  t = std::clamp(t, 0.0, 1.0);
+  const double r = c.ra + (c.rb - c.ra) * t;
+  const double d = glm::distance(x, c.a + axis * t);
+  return r > 0.0 ? d / r : (d > 0.0 ? std::numeric_limits<double>::infinity() : 0.0);
+}
+
+double stemReach(const std::vector<Capsule>& stem, const Vec3& x) {
+  double best = std::numeric_limits<double>::infinity();
+  for (const Capsule& c : stem) best = std::min(best, capsuleReach(c, x));
+  return best;
+}
+
+std::vector<std::vector<Capsule>> stemCapsules(const Skeleton& skeleton) {
+  std::vector<std::vector<Capsule>> capsules(skeleton.stems.size());
+  const auto& nodes = skeleton.nodes;
+  for (std::size_t s = 0; s < skeleton.stems.size(); ++s) {
+    const SkeletonStem& stem = skeleton.stems[s];
+    std::vector<Capsule>& out = capsules[s];
+    for (int k = 0; k < stem.nodeCount; ++k) {
+      const SkeletonNode& n = nodes[static_cast<std::size_t>(stem.firstNode + k)];
+      if (n.parent < 0) continue;
+      const SkeletonNode& p = nodes[static_cast<std::size_t>(n.parent)];
+      out.push_back(Capsule{p.world.position, n.world.position, n.startRadius > 0.0 ? n.startRadius : p.radius, n.radius});
+    }
+    const bool growsFromAnother = stem.attachNode >= 0 && (stem.parentStem >= 0 || stem.cloneOf >= 0);
+    if (!growsFromAnother || out.empty()) continue;
+    // Cut the stem where its axis leaves the wood of the stem it grows from.
+    const SkeletonNode& attach = nodes[static_cast<std::size_t>(stem.attachNode)];
+    const Vec3 from = attach.world.direction(), to = glm::normalize(out.front().b - out.front().a);
+    const double sine = std::max(kMinSine, glm::length(glm::cross(from, to)));
+    double cut = kSurfaceReach * (attach.radius + out.front().ra) / sine;
+    std::size_t drop = 0;
+    for (; drop < out.size(); ++drop) {
+      Capsule& c = out[drop];
+      const double len = glm::distance(c.a, c.b);
+      if (cut < len) {
+        const double t = len > 0.0 ? cut / len : 0.0;
+        c.a = c.a + (c.b - c.a) * t;
+        c.ra = c.ra + (c.rb - c.ra) * t;
+        c.flatStart = true;
+        break;
+      }
+      cut -= len;
+    }
+    out.erase(out.begin(), out.begin() + static_cast<std::ptrdiff_t>(drop));
+  }
+  return capsules;
+}
+
+}  // namespace arbor
