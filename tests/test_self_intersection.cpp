@@ -1,0 +1,232 @@
+// The self-intersection check: crossing quads found, neighbours that only touch not, folds and necks seen
+// although they share corners, skeleton crossings told from the mesher's, the BVH equal to brute force.
+#include <catch2/catch.hpp>
+#include <chrono>
+#include <cstdio>
+
+#include "growth/weber_penn.hpp"
+#include "mesh/self_intersection.hpp"
+#include "mesh/stem_capsules.hpp"
+#include "mesh_support.hpp"
+#include "species/species_io.hpp"
+#include "test_support.hpp"
+
+using namespace arbor;
+
+namespace {
+
+// A mesh of loose quads: each given by its four corners, each corner its own vertex unless `shared` says.
+struct QuadSoup {
+  QuadMesh mesh;
+  std::uint32_t add(const Vec3& p) {
+    mesh.positions.emplace_back(p);
+    return static_cast<std::uint32_t>(mesh.positions.size() - 1);
+  }
+  void quad(std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d) { mesh.quads.push_back({a, b, c, d}); }
+  void quad(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) { quad(add(a), add(b), add(c), add(d)); }
+};
+
+std::size_t pairs(const QuadMesh& mesh) { return findIntersectingQuads(mesh).size(); }
+
+// A unit cube, closed and outward: six quads on eight shared corners.
+QuadMesh cube() {
+  QuadSoup s;
+  for (int i = 0; i < 8; ++i) s.add(Vec3(i & 1, (i >> 1) & 1, (i >> 2) & 1));
+  s.quad(0, 2, 3, 1);
+  s.quad(4, 5, 7, 6);
+  s.quad(0, 1, 5, 4);
+  s.quad(2, 6, 7, 3);
+  s.quad(0, 4, 6, 2);
+  s.quad(1, 3, 7, 5);
+  return s.mesh;
+}
+
+// Two trunks, each one straight skeleton edge of radius r, crossing at the origin (along x and along y).
+Skeleton crossingSkeleton(double r) {
+  Skeleton s;
+  for (int stem = 0; stem < 2; ++stem) {
+    const Vec3 dir = stem == 0 ? Vec3(1, 0, 0) : Vec3(0, 1, 0);
+    SkeletonNode base, tip;
+    base.stem = tip.stem = stem;
+    base.kind = NodeKind::Base;
+    tip.kind = NodeKind::Tip;
+    base.world.position = -dir;
+    tip.world.position = dir;
+    base.radius = tip.radius = tip.startRadius = r;
+    base.parent = -1;
+    tip.parent = static_cast<int>(s.nodes.size());
+    SkeletonStem st;
+    st.firstNode = static_cast<int>(s.nodes.size());
+    st.nodeCount = 2;
+    s.nodes.push_back(base);
+    s.nodes.push_back(tip);
+    s.stems.push_back(st);
+  }
+  return s;
+}
+
+}  // namespace
+
+TEST_CASE("two quads crossing each other are one pair; two apart are none", "[mesh][self-intersection]") {
+  QuadSoup s;
+  s.quad(Vec3(-1, -1, 0), Vec3(1, -1, 0), Vec3(1, 1, 0), Vec3(-1, 1, 0));
+  s.quad(Vec3(0, -0.5, -1), Vec3(0, 0.5, -1), Vec3(0, 0.5, 1), Vec3(0, -0.5, 1));
+  const auto hits = findIntersectingQuads(s.mesh);
+  REQUIRE(hits.size() == 1);
+  CHECK(hits[0].a == 0);
+  CHECK(hits[0].b == 1);
+  CHECK(hits[0].contact == QuadContact::Apart);
+  CHECK(std::abs(hits[0].point.x) < 1e-9);
+  CHECK(std::abs(hits[0].point.z) < 1e-9);
+
+  QuadSoup apart;
+  apart.quad(Vec3(-1, -1, 0), Vec3(1, -1, 0), Vec3(1, 1, 0), Vec3(-1, 1, 0));
+  apart.quad(Vec3(-1, -1, 0.01), Vec3(1, -1, 0.01), Vec3(1, 1, 0.01), Vec3(-1, 1, 0.01));  // parallel, above
+  apart.quad(Vec3(3, -0.5, -1), Vec3(3, 0.5, -1), Vec3(3, 0.5, 1), Vec3(3, -0.5, 1));      // beside, upright
+  CHECK(pairs(apart.mesh) == 0);
+}
+
+TEST_CASE("a quad folded back over its neighbour across their shared edge is a fold; one bent is not", "[mesh][self-intersection]") {
+  for (double angle : {180.0, 90.0, 20.0, 5.0, 0.0}) {
+    INFO("dihedral angle " << angle << " degrees");
+    QuadSoup s;
+    const std::uint32_t e0 = s.add(Vec3(0, 0, 0)), e1 = s.add(Vec3(0, 1, 0));
+    // The first quad lies on +x; the second turns about the shared edge (the y axis) by `angle`.
+    const std::uint32_t a2 = s.add(Vec3(1, 1, 0)), a3 = s.add(Vec3(1, 0, 0));
+    const double t = radians(angle);
+    const Vec3 out(std::cos(t), 0, std::sin(t));
+    const std::uint32_t b2 = s.add(out * 0.8 + Vec3(0, 1, 0)), b3 = s.add(out * 0.8);
+    s.quad(e0, e1, a2, a3);
+    s.quad(e1, e0, b3, b2);
+    const auto hits = findIntersectingQuads(s.mesh);
+    CHECK(hits.size() == (angle == 0.0 ? 1u : 0u));
+    if (!hits.empty()) CHECK(hits[0].contact == QuadContact::Edge);
+  }
+  // A folded neighbour that is not flat on the first: its far edge dips through the first quad.
+  QuadSoup s;
+  const std::uint32_t e0 = s.add(Vec3(0, 0, 0)), e1 = s.add(Vec3(0, 1, 0));
+  s.quad(e0, e1, s.add(Vec3(1, 1, 0)), s.add(Vec3(1, 0, 0)));
+  s.quad(e1, e0, s.add(Vec3(0.8, -0.1, 0.3)), s.add(Vec3(0.8, 1.1, -0.3)));
+  const auto hits = findIntersectingQuads(s.mesh);
+  REQUIRE(hits.size() == 1);
+  CHECK(hits[0].contact == QuadContact::Edge);
+}
+
+TEST_CASE("quads on one corner intersect only when they cross beyond it", "[mesh][self-intersection]") {
+  // A square on the xy plane, and a second square sharing its corner at the origin.
+  auto pairOn = [](const Vec3& b1, const Vec3& b2, const Vec3& b3) {
+    QuadSoup s;
+    const std::uint32_t v = s.add(Vec3(0, 0, 0));
+    s.quad(v, s.add(Vec3(1, 0, 0)), s.add(Vec3(1, 1, 0)), s.add(Vec3(0, 1, 0)));
+    s.quad(v, s.add(b1), s.add(b2), s.add(b3));
+    return findIntersectingQuads(s.mesh);
+  };
+  // Touching at the corner only: standing on it, hanging below it, lying beside it in the plane.
+  CHECK(pairOn(Vec3(-1, 0, 1), Vec3(-1, -1, 1), Vec3(0, -1, 1)).empty());
+  CHECK(pairOn(Vec3(0, 0, -1), Vec3(1, 1, -1), Vec3(0.5, 0.5, -1.5)).empty());
+  CHECK(pairOn(Vec3(0, -1, 0), Vec3(-1, -1, 0), Vec3(-1, 0, 0)).empty());
+  // Through the first square beyond the corner: its far corners above and below the plane, inside it.
+  const auto through = pairOn(Vec3(0.6, 0.2, 0.5), Vec3(0.8, 0.8, 0.2), Vec3(0.2, 0.6, -0.5));
+  REQUIRE(through.size() == 1);
+  CHECK(through[0].contact == QuadContact::Vertex);
+  // Lying on the first square in its plane, overlapping it (a fold to zero about a corner).
+  CHECK(pairOn(Vec3(0.5, 0.1, 0), Vec3(0.6, 0.6, 0), Vec3(0.1, 0.5, 0)).size() == 1);
+}
+
+TEST_CASE("a closed cube has no intersecting quads", "[mesh][self-intersection]") {
+  const SelfIntersectionReport r = checkSelfIntersections(cube());
+  CHECK(r.quads == 6);
+  CHECK(r.pairs == 0);
+  CHECK_FALSE(r.classified);
+}
+
+TEST_CASE("two stems whose skeleton capsules cross make a skeleton-made pair; a fold stays mesh-made", "[mesh][self-intersection]") {
+  const double r = 0.05;
+  const Skeleton skeleton = crossingSkeleton(r);
+  TreeMesh tree;
+  QuadSoup s;
+  // Stem 0 along x, a flat quad at its top surface; stem 1 along y, an upright quad through its axis.
+  s.quad(Vec3(-0.5, -r, r), Vec3(0.5, -r, r), Vec3(0.5, r, r), Vec3(-0.5, r, r));
+  s.quad(Vec3(0, -0.5, -r), Vec3(0, 0.5, -r), Vec3(0, 0.5, 2 * r), Vec3(0, -0.5, 2 * r));
+  tree.mesh = s.mesh;
+  tree.quadStem = {0, 1};
+  SelfIntersectionReport report = checkSelfIntersections(tree, skeleton);
+  REQUIRE(report.pairs == 1);
+  CHECK(report.classified);
+  CHECK(report.skeletonMade == 1);
+  CHECK(report.meshMade == 0);
+  CHECK(report.hits[0].relation == StemRelation::Other);
+
+  // The same two quads, but stem 1's skeleton moved far away: the mesh crosses where no wood is.
+  Skeleton apart = skeleton;
+  for (SkeletonNode& n : apart.nodes)
+    if (n.stem == 1) n.world.position += Vec3(0, 0, 10);
+  report = checkSelfIntersections(tree, apart);
+  REQUIRE(report.pairs == 1);
+  CHECK(report.meshMade == 1);
+
+  // Both quads of one stem: mesh-made whatever the skeleton says.
+  tree.quadStem = {0, 0};
+  report = checkSelfIntersections(tree, skeleton);
+  CHECK(report.meshMade == 1);
+  CHECK(report.hits[0].relation == StemRelation::Same);
+}
+
+TEST_CASE("a child's capsules start where its axis leaves its parent's wood", "[mesh][self-intersection]") {
+  Skeleton s = crossingSkeleton(0.1);
+  // Stem 1 grows from stem 0's base node, at right angles: cut at 1.6 (0.1 + 0.1) = 0.32 along it.
+  s.stems[1].parentStem = 0;
+  s.stems[1].attachNode = 0;
+  s.nodes[0].world.position = Vec3(0, -1, 0);  // stem 0's base sits where stem 1 starts
+  s.nodes[0].world.rotation = glm::angleAxis(radians(90.0), Vec3(0, 1, 0));  // stem 0 leaves along +x
+  s.nodes[3].parent = 0;
+  s.stems[1].nodeCount = 1;
+  s.stems[1].firstNode = 3;
+  const auto capsules = stemCapsules(s);
+  REQUIRE(capsules[1].size() == 1);
+  CHECK(capsules[1][0].flatStart);
+  CHECK(capsules[1][0].a.y == Approx(-1 + 0.32));
+  CHECK(std::isinf(stemReach(capsules[1], Vec3(0, -1, 0))));   // inside the parent: not the child's wood
+  CHECK(stemReach(capsules[1], Vec3(0, 0, 0.1)) == Approx(1.0));  // on the child's surface further out
+}
+
+TEST_CASE("the BVH finds the same pairs as testing every pair, on a preset's mesh", "[mesh][self-intersection]") {
+  const TreeMesh tree = test::meshOf("palm", 1);
+  const auto fast = findIntersectingQuads(tree.mesh);
+  const auto slow = findIntersectingQuadsBruteForce(tree.mesh);
+  INFO(tree.mesh.quads.size() << " quads");
+  REQUIRE(fast.size() == slow.size());
+  for (std::size_t i = 0; i < fast.size(); ++i) {
+    CHECK(fast[i].a == slow[i].a);
+    CHECK(fast[i].b == slow[i].b);
+  }
+  // A tree with some crossing in it, so that the comparison compares something.
+  const TreeMesh willow = test::meshOf("weeping-willow", 2, 2);
+  const auto fastW = findIntersectingQuads(willow.mesh);
+  CHECK(fastW.size() == findIntersectingQuadsBruteForce(willow.mesh).size());
+}
+
+// Measurement only (issue 13): mesh-made and skeleton-made pairs per preset and Arbaro file at seeds 1-3.
+// The mesher is being fixed; the assertion of zero mesh-made pairs comes with the fix
+// (meshMadeIntersections()).
+TEST_CASE("self-intersections of every preset and Arbaro file at seeds 1-3 (measured, not asserted)", "[mesh][self-intersection][measure][.]") {
+  std::vector<std::pair<std::string, SpeciesParams>> species;
+  for (const std::string& name : test::presetNames()) species.emplace_back(name, test::loadPreset(name));
+  for (const std::string& file : test::arbaroSpeciesFiles(ARBOR_SPECIES_DIR))
+    species.emplace_back(file.substr(file.find_last_of('/') + 1), loadSpeciesFile(file));
+  std::printf("%-24s %4s %9s %7s %9s %9s %6s %6s %9s\n", "species", "seed", "quads", "pairs", "skeleton", "mesh",
+              "folds", "necks", "ms");
+  for (const auto& [name, params] : species) {
+    for (std::uint64_t seed : {1u, 2u, 3u}) {
+      GrowthOptions o;
+      o.seed = seed;
+      const Skeleton skeleton = generateSkeleton(params, o);
+      const TreeMesh tree = buildTreeMesh(skeleton);
+      const SelfIntersectionReport r = checkSelfIntersections(tree, skeleton);
+      std::printf("%-24s %4llu %9zu %7zu %9zu %9zu %6zu %6zu %9.1f\n", name.c_str(), static_cast<unsigned long long>(seed),
+                  r.quads, r.pairs, r.skeletonMade, r.meshMade, r.folds, r.neckCrossings, r.milliseconds);
+      std::fflush(stdout);
+      CHECK(r.skeletonMade + r.meshMade == r.pairs);
+    }
+  }
+}
