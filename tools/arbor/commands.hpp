@@ -7,7 +7,7 @@ namespace arbor::cli {
 
 using Action = std::function<int()>;
 
-// Exit codes: 0 success, 1 a failure while running (I/O), 2 bad input or usage.
+// Exit codes: 0 success, 1 a failure while running (I/O; for `check`, mesh-made intersections), 2 bad input or usage.
 constexpr int kExitFailure = 1;
 constexpr int kExitBadInput = 2;
 
@@ -20,6 +20,7 @@ void addRenderCommand(CLI::App& app, Action& action);
 void addViewCommand(CLI::App& app, Action& action);
 void addTexturesCommand(CLI::App& app, Action& action);
 void addAccuracyCommand(CLI::App& app, Action& action);
+void addCheckCommand(CLI::App& app, Action& action);
 
 // Runs an action, turning the project's exceptions into messages and exit codes.
 int runGuarded(const Action& action);

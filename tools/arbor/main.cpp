@@ -47,6 +47,7 @@ int main(int argc, char** argv) {
   addViewCommand(app, action);
   addTexturesCommand(app, action);
   addAccuracyCommand(app, action);
+  addCheckCommand(app, action);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
