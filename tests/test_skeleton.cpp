@@ -176,19 +176,73 @@ TEST_CASE("child counts follow the formulas exactly when variations are zero", "
   for (std::size_t i = 0; i < s.stems.size(); ++i) {
     const SkeletonStem& st = s.stems[i];
     if (st.level != 1) continue;
+    // A whole number of children per stem, as Arbaro counts them (and the level's error shared, so exactly that).
     const double expected = wp::childCountOfLevel1(8, st.length, trunk.length, 0.4);
-    CHECK(children[i] == static_cast<int>(std::floor(expected + 0.5)));
+    CHECK(children[i] == static_cast<int>(std::floor(expected)));
     ++levelOne;
   }
   CHECK(levelOne == 12);
 }
 
-TEST_CASE("leaf counts follow the formula exactly when variations are zero", "[skeleton]") {
+TEST_CASE("a level's split error is shared by its stems, and a split stem's children by its pieces", "[skeleton]") {
+  SpeciesParams p = test::steadySpecies();
+  p.stemLevels[0].segSplits = 0.3;
+  p.stemLevels[0].splitAngle = 20;
+  p.stemLevels[1].segSplits = 0.2;
+  p.stemLevels[1].splitAngle = 20;
+  p.stemLevels[1].curveRes = 6;
+  const Skeleton s = grow(p, 4, 2);
+  std::vector<int> clones(s.stems.size(), 0);
+  for (const SkeletonStem& st : s.stems) {
+    if (st.cloneOf >= 0) ++clones[static_cast<std::size_t>(st.cloneOf)];
+  }
+  for (int level : {0, 1}) {
+    // Every joint a piece walks past (its tip aside) draws on the level's one error, as Arbaro's LevelParams
+    // does: the level splits SegSplits times per joint within half a split, whatever each stem did.
+    double joints = 0.0, splits = 0.0;
+    for (std::size_t i = 0; i < s.stems.size(); ++i) {
+      const SkeletonStem& st = s.stems[i];
+      if (st.level != level) continue;
+      const double walked = static_cast<double>(st.rawJoints.size() - 1);
+      joints += clones[i] > 0 ? walked : walked - 1.0;
+      splits += clones[i] > 0 ? clones[i] - 1 : 0;
+    }
+    INFO("level " << level << ": " << joints << " joints, " << splits << " splits");
+    CHECK(splits > 0.0);
+    CHECK(std::abs(splits - p.stemLevels[static_cast<std::size_t>(level)].segSplits * joints) <= 0.5 + 1e-9);
+  }
+  // The trunk's pieces share its Branches between them: as many children as an unsplit trunk has.
+  int trunkChildren = 0;
+  for (const SkeletonStem& st : s.stems) trunkChildren += st.level == 1 && st.cloneOf < 0 ? 1 : 0;
+  CHECK(trunkChildren == 12);
+}
+
+TEST_CASE("children too stubby to draw as tubes grow as Arbaro grows them, marked for the mesh", "[skeleton]") {
+  SpeciesParams p = test::steadySpecies();
+  p.stemLevels[1].length = 0.004;  // 4 cm children on a 10 m trunk of 20 cm radius end inside it
+  const Skeleton s = grow(p, 1, 3);
+  int children = 0, stubs = 0;
+  for (const SkeletonStem& st : s.stems) {
+    if (st.level == 1) {
+      ++children;
+      stubs += st.stub ? 1 : 0;
+    }
+    if (st.parentStem >= 0 && s.stems[static_cast<std::size_t>(st.parentStem)].stub) CHECK(st.stub);  // grows from one
+  }
+  CHECK(children == 12);
+  CHECK(stubs == 12);
+  CHECK(worstConservationError(s) < 1e-12);
+  CHECK(structuralProblems(s).empty());
+  for (const SkeletonStem& st : grow(test::steadySpecies(), 1).stems) CHECK_FALSE(st.stub);
+}
+
+TEST_CASE("leaf counts follow the formula when variations are zero: within one per stem, exactly for the tree", "[skeleton]") {
   const SpeciesParams p = test::steadySpecies();
   const Skeleton s = grow(p, 1);
   std::vector<int> leaves(s.stems.size(), 0);
   for (const Leaf& l : s.leaves) ++leaves[static_cast<std::size_t>(l.stem)];
   int deepest = 0;
+  double total = 0.0;
   for (std::size_t i = 0; i < s.stems.size(); ++i) {
     const SkeletonStem& st = s.stems[i];
     if (st.level != 2) {
@@ -197,10 +251,13 @@ TEST_CASE("leaf counts follow the formula exactly when variations are zero", "[s
     }
     const double parentLength = s.stems[static_cast<std::size_t>(st.parentStem)].length;
     const double expected = 6.0 * wp::shapeRatio(4, st.offsetOnParent / parentLength);
-    CHECK(leaves[i] == static_cast<int>(std::floor(expected + 0.5)));
+    // The rounding error is the tree's, carried from stem to stem as in Arbaro: each stem is within one.
+    CHECK(std::abs(leaves[i] - expected) < 1.0);
+    total += expected;
     ++deepest;
   }
   CHECK(deepest > 50);
+  CHECK(std::abs(static_cast<double>(s.leaves.size()) - total) <= 0.5 + 1e-9);
   for (const Leaf& l : s.leaves) {
     CHECK_THAT(glm::length(l.direction), WithinAbs(1.0, 1e-12));
     CHECK_THAT(glm::dot(l.direction, l.normal), WithinAbs(0.0, 1e-12));
@@ -311,16 +368,10 @@ TEST_CASE("Arbaro's species files grow the stems per level Arbaro 1.9.9 grows, w
     WARN("Arbaro's species files are not beside this checkout (" << ARBOR_SPECIES_DIR << "); skipped");
     return;
   }
-  // Gaps measured and not closed yet (issue 13): Arbaro shares the clone-split error across a whole level
-  // where Arbor carries it per stem, and never leaves a child out for being stubby or slender.
-  const std::vector<std::string> knownGaps = {"barley.xml", "ca_black_oak.xml", "desert_bush.xml", "eastern_cottonwood.xml",
-                                              "european_larch.xml", "rush.xml", "shave-grass.xml", "tamarack.xml", "weeping_willow.xml",
-                                              "wheat.xml"};
   const auto reference = nlohmann::json::parse(readFile(std::string(TEST_DATA_DIR) + "/arbaro-1.9.9-reference.json"));
-  int compared = 0;
+  int compared = 0, sizeless = 0;
   for (const auto& tree : reference["trees"]) {
     const std::string file = tree["file"];
-    if (std::find(knownGaps.begin(), knownGaps.end(), file) != knownGaps.end()) continue;
     const int seed = tree["seed"];
     INFO(file << " seed " << seed);
     GrowthOptions o;
@@ -334,11 +385,16 @@ TEST_CASE("Arbaro's species files grow the stems per level Arbaro 1.9.9 grows, w
     }
     const auto& theirs = tree["stemsPerLevel"];
     REQUIRE(theirs.size() == ours.size());
-    for (std::size_t l = 0; l < ours.size(); ++l) {
+    // Arbaro drew a tree size below zero (shave-grass: Scale 0.5 ± ScaleV 0.7) and grew only an empty trunk;
+    // Arbor keeps every tree at 5 % of Scale or more, so only the trunks compare.
+    const std::size_t levels = tree["width"].is_null() ? 1 : ours.size();
+    sizeless += tree["width"].is_null() ? 1 : 0;
+    for (std::size_t l = 0; l < levels; ++l) {
       INFO("level " << l << ": Arbor " << ours[l] << ", Arbaro " << theirs[l].get<double>());
       CHECK(std::abs(ours[l] - theirs[l].get<double>()) <= 0.15 * theirs[l].get<double>());
     }
     ++compared;
   }
-  CHECK(compared == 3 * 6);
+  CHECK(compared == 3 * 16);
+  CHECK(sizeless == 1);
 }

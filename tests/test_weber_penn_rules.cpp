@@ -12,7 +12,8 @@ using Catch::Matchers::WithinRel;
 
 TEST_CASE("shape ratios at the crown's top, middle and base", "[wp]") {
   const double pi = std::numbers::pi;
-  CHECK_THAT(wp::shapeRatio(0, 0.5), WithinAbs(0.6, 1e-15));
+  CHECK_THAT(wp::shapeRatio(0, 0.5), WithinAbs(0.5, 1e-15));  // Arbaro's conical, pointed at the top
+  CHECK(wp::shapeRatio(0, 0.0) == 0.0);
   CHECK_THAT(wp::shapeRatio(1, 0.5), WithinAbs(1.0, 1e-15));
   CHECK_THAT(wp::shapeRatio(1, 0.25), WithinAbs(0.2 + 0.8 * std::sin(pi / 4), 1e-15));
   CHECK_THAT(wp::shapeRatio(2, 1.0), WithinAbs(1.0, 1e-15));
@@ -81,10 +82,10 @@ TEST_CASE("child counts follow Weber-Penn's formulas", "[wp]") {
 
 TEST_CASE("child lengths follow the crown shape and the parent", "[wp]") {
   SpeciesParams p;
-  p.shape = 0;  // conical: 0.2 + 0.8 ratio
+  p.shape = 0;  // conical: ratio
   // A child at mid-height of the branching part of a 10 m trunk whose base 2 m is bare.
   const double len = wp::childLengthOfTrunk(p, 0.3, 10.0, 2.0, 6.0);
-  CHECK_THAT(len, WithinAbs(10.0 * 0.3 * (0.2 + 0.8 * 0.5), 1e-12));
+  CHECK_THAT(len, WithinAbs(10.0 * 0.3 * 0.5, 1e-12));
   CHECK_THAT(wp::childLengthOfDeeper(0.5, 4.0, 1.0), WithinAbs(0.5 * (4.0 - 0.6), 1e-12));
 }
 

@@ -49,15 +49,15 @@ struct RawStem {
   double startRadius = 0;       // radius leaving the attach/split node
   double parentRadius = 0;      // parent's radius arriving at the attachment (children only)
   double branchRatio = 0, secondaryAngle = 0, deflection = 0;
+  bool stub = false;            // wp::stubby, or on a stub: the mesh may leave it out
 
   std::vector<RawAttachment> attachments;  // in z order
 
-  // State carried from a stem to its clones (Weber-Penn's error diffusion and rotation).
+  // State carried from a stem to its clones (child and leaf rates, rotation).
   double lengthChildMax = 0;
-  double childRate = 0, childCarry = 0, childAzimuth = 0, childSide = 1;
-  double leafRate = 0, leafCarry = 0, leafAzimuth = 0, leafSide = 1;
+  double childRate = 0, childAzimuth = 0, childSide = 1;
+  double leafRate = 0, leafAzimuth = 0, leafSide = 1;
   double naturalEnd = 0;        // natural radius after the last attachment
-  double splitError = 0;
   std::uint64_t childSlots = 0; // children considered so far (keys stay stable when some are skipped)
 
   double segmentLength() const { return length / curveRes; }

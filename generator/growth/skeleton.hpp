@@ -49,6 +49,7 @@ struct SkeletonStem {
   double secondaryAngle = 0;      // radians from the parent's direction at the attachment
   double primaryDeflection = 0;   // radians the parent turned away at the attachment
   int firstSegment = 0;           // segment index where this stem starts (clones: after the split)
+  bool stub = false;              // too short, stubby or slender for a tube (wp::stubby), or grows from one; clones share it
   std::vector<Transform> rawJoints;  // undeflected base frame then each segment end: the raw tree data
 };
 

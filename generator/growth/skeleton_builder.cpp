@@ -150,6 +150,7 @@ class Builder {
     stem.secondaryAngle = st.secondaryAngle;
     stem.primaryDeflection = st.deflection;
     stem.firstSegment = st.firstSegment;
+    stem.stub = st.stub;
     stem.rawJoints.reserve(st.joints.size() + 1);
     stem.rawJoints.push_back(st.base);
     stem.rawJoints.insert(stem.rawJoints.end(), st.joints.begin(), st.joints.end());

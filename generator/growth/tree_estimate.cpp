@@ -1,7 +1,7 @@
 // The estimate grows a handful of sample stems per level instead of the whole tree: each sample stands for
-// many stems (its weight) and meets the same rules as real ones (child counts and lengths, da Vinci radii
-// stepped down at every child and clone split, the rules that leave thin or stubby children out), so trees
-// whose children mostly run out of wood are not over-counted. Pruning and random variations are left out.
+// many stems (its weight) and meets the same rules as real ones (whole child counts and lengths, children
+// shared among the pieces of a split stem, da Vinci radii stepped down at every child and clone split, the
+// rule that leaves children of no length out). Pruning and random variations are left out.
 #include "tree_estimate.hpp"
 
 #include <algorithm>
@@ -77,27 +77,22 @@ TreeEstimate estimateTree(const SpeciesParams& p, int levels) {
     const StemLevelParams& lp = p.level(level);
     const int segments = std::max(1, lp.curveRes);
     // Pieces covering each segment: every joint but the tip splits a piece into 1 + splits (BaseSplits at the
-    // trunk's first joint); the last count is the number of stems a unit ends in.
+    // trunk's first joint); the last count is the number of stems a unit ends in. The level's split error is
+    // shared by all its pieces, so on average each piece splits SegSplits times at each joint.
     std::vector<double> pieces(static_cast<std::size_t>(segments), 1.0), splits(static_cast<std::size_t>(segments), 0.0);
-    // Splits are not random: the fraction carries from joint to joint (and on into the clones), rounding half up.
-    double carried = 0.0;
+    // A split ends its stem and starts 1 + splits clones: the stems of a unit are its first and every clone.
+    double stemsPerUnit = 1.0;
     for (int j = 1; j < segments; ++j) {
       const auto u = static_cast<std::size_t>(j);
-      if (level == 0 && j == 1 && p.baseSplits > 0) {
-        splits[u] = p.baseSplits;
-      } else if (lp.segSplits > 0.0) {
-        splits[u] = std::floor(lp.segSplits + carried + 0.5);
-        carried += lp.segSplits - splits[u];
-      }
+      splits[u] = level == 0 && j == 1 && p.baseSplits > 0 ? p.baseSplits : std::max(0.0, lp.segSplits);
       pieces[u] = pieces[u - 1] * (1.0 + splits[u]);
+      const double events = pieces[u - 1] * std::min(1.0, splits[u]);  // pieces that split here
+      stemsPerUnit += pieces[u] - pieces[u - 1] + events;
     }
     double segmentPieces = 0.0;
     for (double m : pieces) segmentPieces += m;
     double units = 0.0;
     for (const Sample& s : samples) units += s.weight;
-    // A split ends its stem and starts 1 + splits clones: the stems of a unit are its first and every clone.
-    double stemsPerUnit = 1.0;
-    for (int j = 1; j < segments; ++j) stemsPerUnit += splits[static_cast<std::size_t>(j)] > 0.0 ? pieces[static_cast<std::size_t>(j)] : 0.0;
     const double stems = units * stemsPerUnit;
     e.stemsPerLevel.push_back(stems);
     e.nodesPerLevel.push_back(units * (segmentPieces + 1.0));
@@ -125,8 +120,8 @@ TreeEstimate estimateTree(const SpeciesParams& p, int levels) {
     std::vector<Sample> children;
     for (const Sample& s : samples) {
       double count = next.branches;
-      if (level == 1) count = wp::childCountOfLevel1(next.branches, s.length, s.parentLength, s.parentLengthChildMax);
-      if (level >= 2) count = wp::childCountOfDeeper(next.branches, s.offset, s.parentLength);
+      if (level == 1) count = std::floor(wp::childCountOfLevel1(next.branches, s.length, s.parentLength, s.parentLengthChildMax));
+      if (level >= 2) count = std::floor(wp::childCountOfDeeper(next.branches, s.offset, s.parentLength));
       const double seg = s.length / segments;
       std::vector<double> cover(static_cast<std::size_t>(segments));
       double covered = 0.0;
@@ -143,7 +138,7 @@ TreeEstimate estimateTree(const SpeciesParams& p, int levels) {
         const double expected = count / covered * cover[u];
         if (expected <= 0.0) continue;
         const int slots = static_cast<int>(std::ceil(std::min(expected, 64.0)));
-        const double share = expected / slots;  // each slot stands for this many children per piece
+        const double share = expected / slots;  // each slot stands for this many children per unit
         const double a = (j + 1 - cover[u]) * seg;
         for (int k = 0; k < slots; ++k) {
           const double z = a + (k + 0.5) / slots * cover[u] * seg;
@@ -151,9 +146,9 @@ TreeEstimate estimateTree(const SpeciesParams& p, int levels) {
           const double radius = Cs * incoming;
           const double length = level == 0 ? wp::childLengthOfTrunk(p, next.length, s.length, baseLength, z)
                                            : wp::childLengthOfDeeper(next.length, s.length, z);
-          if (!wp::childGrows(length, incoming, radius, scale)) continue;
-          children.push_back(Sample{s.weight * pieces[u] * share, length, radius, z, s.length, next.length});
-          natural *= std::pow(Cp, share);
+          if (!wp::childGrows(length, radius)) continue;
+          children.push_back(Sample{s.weight * share, length, radius, z, s.length, next.length});
+          natural *= std::pow(Cp, share / pieces[u]);  // each piece carries its share of the unit's children
         }
       }
     }

@@ -22,7 +22,7 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 constexpr std::uint64_t kStreamPlacement = 4;
-constexpr int kPruneSteps = 7;  // bisection steps: the pruned length is within 1 % of the original
+constexpr double kMinStemLength = 1e-5;  // Arbaro's shortest stem: every child longer than this grows
 constexpr double kEstimateMargin = 16.0;   // refuse before growing only trees estimated this far past a limit
 
 // Geometry of one stem and its clones for a trial length (pruning grows several before keeping one).
@@ -41,7 +41,8 @@ long roundHalfUp(double x) { return static_cast<long>(std::floor(x + 0.5)); }
 class Grower {
  public:
   Grower(const SpeciesParams& p, const GrowthOptions& o, RawTree& tree)
-      : p_(p), options_(o), tree_(tree), levels_(o.levels > 0 ? o.levels : p.levels), E_(p.treeShapeExponent) {}
+      : p_(p), options_(o), tree_(tree), levels_(o.levels > 0 ? o.levels : p.levels), E_(p.treeShapeExponent),
+        splitError_(static_cast<std::size_t>(levels_ + 1), 0.0), childError_(static_cast<std::size_t>(levels_ + 1), 0.0) {}
 
   void run() {
     // Hopeless trees are refused from their parameters; the estimate runs high (it cannot see the children
@@ -71,6 +72,11 @@ class Grower {
   const double E_;
   std::size_t nodesMade_ = 0;
   std::size_t walked_ = 0;  // joints visited by the envelope walk under way
+  // Rounding errors of fractional counts, one per level and shared by all its stems in the order they are made
+  // (as Arbaro's LevelParams keeps them): a level splits SegSplits times per joint on average, whatever the stem.
+  std::vector<double> splitError_;
+  std::vector<double> childError_;  // children of the level's stems, per segment
+  double leafError_ = 0.0;
 
   // Nodes are counted as they are made, clones included, so memory never runs past the limit's share.
   void countNodes(std::size_t n) {
@@ -115,21 +121,22 @@ class Grower {
     return glm::angleAxis(angle, axis / axisLength) * q;
   }
 
-  // Walks one stem's segments: curvature, attraction and clone splits. onJoint(frame) sees each segment end
-  // and may stop the walk by returning false; onClone(key, base, firstSegment, splitError) sees each clone.
+  // Walks one stem's segments: curvature, attraction and clone splits. onJoint(s, frame) sees the end of each
+  // segment s and may stop the walk by returning false; onClone(key, base, firstSegment) sees each clone, which
+  // must walk at once: the split error is the level's, drawn from in the order the pieces are walked.
   template <class OnJoint, class OnClone>
   bool walkStem(std::uint64_t key, int level, const Transform& base, double length, int firstSegment,
-                double splitError, OnJoint&& onJoint, OnClone&& onClone) const {
+                double& splitError, OnJoint&& onJoint, OnClone&& onClone) const {
     const StemLevelParams& lp = p_.level(level);
     Rng rng(key, kStreamGeometry);
     const double segLength = length / lp.curveRes;
     Transform frame = base;
     for (int s = firstSegment; s < lp.curveRes; ++s) {
       const Vec3 end = frame.position + frame.direction() * segLength;
-      if (s == lp.curveRes - 1) return onJoint(Transform{end, frame.rotation});  // tip keeps the arriving direction
+      if (s == lp.curveRes - 1) return onJoint(s, Transform{end, frame.rotation});  // tip keeps the arriving direction
       Quat next = frame.rotation * rotationX(curveAngle(lp, s + 1, rng));
       if (level >= 2 && p_.attractionUp != 0.0) next = attract(next, lp.curveRes);
-      if (!onJoint(Transform{end, next})) return false;
+      if (!onJoint(s, Transform{end, next})) return false;
 
       int splits = 0;
       if (level == 0 && s == 0 && firstSegment == 0 && p_.baseSplits > 0) {
@@ -149,7 +156,7 @@ class Grower {
           // Tilt by theta towards azimuth psi without spinning the clone's frame about its own axis.
           const Quat tilt = rotationZ(psi) * rotationX(theta) * rotationZ(-psi);
           const std::uint64_t cloneKey = childKey(key, kKeyClone, static_cast<std::uint64_t>(s) * 64 + i);
-          if (!onClone(cloneKey, Transform{end, next * tilt}, s + 1, splitError)) return false;
+          if (!onClone(cloneKey, Transform{end, next * tilt}, s + 1)) return false;
         }
         return true;
       }
@@ -158,58 +165,65 @@ class Grower {
     return true;
   }
 
-  Grown growGeometry(std::uint64_t key, int level, const Transform& base, double length, int firstSegment,
-                     double splitError) {
+  Grown growGeometry(std::uint64_t key, int level, const Transform& base, double length, int firstSegment) {
     Grown g;
     g.key = key;
     g.firstSegment = firstSegment;
     g.base = base;
     g.joints.reserve(static_cast<std::size_t>(p_.level(level).curveRes - firstSegment));
     walkStem(
-        key, level, base, length, firstSegment, splitError,
-        [&](const Transform& joint) {
+        key, level, base, length, firstSegment, splitError_[static_cast<std::size_t>(level)],
+        [&](int, const Transform& joint) {
           countNodes(1);
           g.joints.push_back(joint);
           return true;
         },
-        [&](std::uint64_t cloneKey, const Transform& cloneBase, int cloneFirst, double cloneError) {
+        [&](std::uint64_t cloneKey, const Transform& cloneBase, int cloneFirst) {
           g.split = true;
-          g.clones.push_back(growGeometry(cloneKey, level, cloneBase, length, cloneFirst, cloneError));
+          g.clones.push_back(growGeometry(cloneKey, level, cloneBase, length, cloneFirst));
           return true;
         });
     return g;
   }
 
-  // Whether every segment end of the stem and its clones lies in the envelope; stops at the first outside.
+  // The first segment whose end leaves the envelope, of the stem or any of its clones; -1 if all lie inside.
   // A walk visits at most the nodes the stem will be grown with, so it is bounded by what the limit leaves.
-  bool fitsEnvelope(std::uint64_t key, int level, const Transform& base, double length, int firstSegment,
-                    double splitError) {
-    return walkStem(
+  int firstOutside(std::uint64_t key, int level, const Transform& base, double length, int firstSegment,
+                   double& splitError) {
+    int outside = -1;
+    walkStem(
         key, level, base, length, firstSegment, splitError,
-        [this](const Transform& joint) {
+        [&](int s, const Transform& joint) {
           if (++walked_ + nodesMade_ > options_.limits.nodes) throw GenerationError(tooManyNodes());
-          return wp::insideEnvelope(p_, tree_.treeScale, joint.position.x, joint.position.y, joint.position.z);
+          if (wp::insideEnvelope(p_, tree_.treeScale, joint.position.x, joint.position.y, joint.position.z)) return true;
+          outside = s;
+          return false;
         },
-        [&](std::uint64_t cloneKey, const Transform& cloneBase, int cloneFirst, double cloneError) {
-          return fitsEnvelope(cloneKey, level, cloneBase, length, cloneFirst, cloneError);
+        [&](std::uint64_t cloneKey, const Transform& cloneBase, int cloneFirst) {
+          outside = firstOutside(cloneKey, level, cloneBase, length, cloneFirst, splitError);
+          return outside < 0;
         });
+    return outside;
   }
 
-  // Weber-Penn pruning: the longest length that fits the envelope, blended with the original by PruneRatio.
+  // Arbaro's pruning: while the stem (on the very same draws, and the level's split error as it stands) leaves
+  // the envelope, cut it back to the segments that fit, by at least 1/15 and at most half of it at a time; then
+  // keep PruneRatio of the cut.
   double prunedLength(std::uint64_t key, int level, const Transform& base, double length) {
     if (p_.pruneRatio <= 0.0 || level == 0) return length;
-    auto fits = [&](double trial) {
+    const int curveRes = p_.level(level).curveRes;
+    auto outside = [&](double trial) {
       walked_ = 0;
-      return fitsEnvelope(key, level, base, trial, 0, 0.0);
+      double error = splitError_[static_cast<std::size_t>(level)];  // a trial must not use up the level's error
+      return firstOutside(key, level, base, trial, 0, error);
     };
-    if (fits(length)) return length;
-    double lo = 0.0, hi = length;
-    for (int i = 0; i < kPruneSteps; ++i) {  // a fixed number of steps: pruning always ends
-      const double mid = 0.5 * (lo + hi);
-      if (fits(mid)) lo = mid;
-      else hi = mid;
+    double trial = length;
+    int segment = outside(trial);
+    while (segment >= 0 && trial > 0.001 * tree_.treeScale) {  // at least length / 15 off per step: it ends
+      trial = std::min(std::max(trial / curveRes * segment, 0.5 * trial), trial - length / 15.0);
+      if (trial > kMinStemLength) segment = outside(trial);
     }
-    return length * (1.0 - p_.pruneRatio) + lo * p_.pruneRatio;
+    return length - (length - trial) * p_.pruneRatio;
   }
 
   // Appends a grown stem and, after it, its clones (so sources always precede their clones).
@@ -258,7 +272,7 @@ class Grower {
       proto.profile = makeStemProfile(lp.taper, length, radius, p_.flare);
       proto.naturalStart = radius;
       proto.startRadius = radius * proto.profile.at(0.0);
-      commit(growGeometry(key, 0, base, length, 0, 0.0), proto);
+      commit(growGeometry(key, 0, base, length, 0), proto);
     }
   }
 
@@ -313,6 +327,7 @@ class Grower {
         else if (parent.level == 1)
           count = wp::childCountOfLevel1(lp.branches, parent.length, parent.parentLength, parent.parentLengthChildMax);
         else count = wp::childCountOfDeeper(lp.branches, parent.offsetOnParent, parent.parentLength);
+        count = std::floor(count);  // a whole number of children per stem, as Arbaro counts them
         double coverage = 0.0;
         for (int s = 0; s < parent.curveRes; ++s) {
           double a = 0, b = 0;
@@ -323,8 +338,8 @@ class Grower {
       } else {
         const RawStem& source = tree_.stems[static_cast<std::size_t>(parent.cloneOf)];
         parent.lengthChildMax = source.lengthChildMax;
-        parent.childRate = source.childRate;
-        parent.childCarry = source.childCarry;
+        // The pieces of a split stem share its children: as many grow on them together as on the unsplit stem.
+        parent.childRate = source.childRate / static_cast<double>(source.clones.size());
         parent.childAzimuth = source.childAzimuth + kPi;
         parent.childSide = source.childSide;
       }
@@ -338,7 +353,7 @@ class Grower {
     const double murrayX = natural::primaryAngle(1.0, Cp, Cs);
 
     double naturalRadius = tree_.stems[pi].naturalStart;
-    double carry = tree_.stems[pi].childCarry;
+    double& error = childError_[static_cast<std::size_t>(level - 1)];
     double azimuth = tree_.stems[pi].childAzimuth;
     double side = tree_.stems[pi].childSide;
     const int firstSegment = tree_.stems[pi].firstSegment, lastSegment = tree_.stems[pi].lastSegment();
@@ -348,8 +363,8 @@ class Grower {
       childRange(tree_.stems[pi], s, a, b);
       if (b <= a) continue;
       const double expected = tree_.stems[pi].childRate * (b - a) / tree_.stems[pi].segmentLength();
-      const long n = roundHalfUp(carry + expected) - roundHalfUp(carry);
-      carry += expected;
+      const long n = std::max(0L, roundHalfUp(expected + error));
+      error += expected - static_cast<double>(n);
       for (long j = 0; j < n; ++j) {
         const double z = a + (static_cast<double>(j) + 0.5) / static_cast<double>(n) * (b - a);
         const std::uint64_t slot = tree_.stems[pi].childSlots++;
@@ -369,7 +384,7 @@ class Grower {
         const Transform base{segment.position, segment.rotation * rotationZ(azimuth) * rotationX(angle)};
         const double length = prunedLength(key, level, base, length0);
         const double childRadius = Cs * incoming;
-        if (!wp::childGrows(length, incoming, childRadius, tree_.treeScale)) continue;
+        if (!wp::childGrows(length, childRadius)) continue;
 
         RawStem proto;
         proto.level = level;
@@ -386,7 +401,8 @@ class Grower {
         proto.branchRatio = S;
         proto.secondaryAngle = angle;
         proto.deflection = natural ? murrayX : 0.0;
-        const int child = commit(growGeometry(key, level, base, length, 0, 0.0), proto);
+        proto.stub = parent.stub || wp::stubby(length, incoming, childRadius, tree_.treeScale);
+        const int child = commit(growGeometry(key, level, base, length, 0), proto);
         tree_.stems[pi].attachments.push_back(
             RawAttachment{z, child, azimuth, incoming, Cp, natural ? murrayX : 0.0});
         countNodes(3);
@@ -395,7 +411,6 @@ class Grower {
     }
     RawStem& parent = tree_.stems[pi];
     settleTail(parent);
-    parent.childCarry = carry;
     parent.childAzimuth = azimuth;
     parent.childSide = side;
     parent.naturalEnd = naturalRadius;
@@ -439,8 +454,7 @@ class Grower {
       stem.leafRate = count / stem.curveRes;
     } else {
       const RawStem& source = tree_.stems[static_cast<std::size_t>(stem.cloneOf)];
-      stem.leafRate = source.leafRate;
-      stem.leafCarry = source.leafCarry;
+      stem.leafRate = source.leafRate;  // unlike children, each piece of a split stem has the whole stem's leaves
       stem.leafAzimuth = source.leafAzimuth + kPi;
       stem.leafSide = source.leafSide;
     }
@@ -465,10 +479,10 @@ class Grower {
       return;
     }
 
-    double carry = stem.leafCarry, azimuth = stem.leafAzimuth, side = stem.leafSide;
+    double azimuth = stem.leafAzimuth, side = stem.leafSide;
     for (int s = stem.firstSegment; s <= stem.lastSegment(); ++s) {
-      const long n = roundHalfUp(carry + stem.leafRate) - roundHalfUp(carry);
-      carry += stem.leafRate;
+      const long n = std::max(0L, roundHalfUp(stem.leafRate + leafError_));  // the tree's error, shared as in Arbaro
+      leafError_ += stem.leafRate - static_cast<double>(n);
       const double a = s * stem.segmentLength();
       for (long j = 0; j < n; ++j) {
         const double z = a + (static_cast<double>(j) + 0.5) / static_cast<double>(n) * stem.segmentLength();
@@ -482,7 +496,6 @@ class Grower {
         addLeaf(s, z, azimuth, down);
       }
     }
-    stem.leafCarry = carry;
     stem.leafAzimuth = azimuth;
     stem.leafSide = side;
   }

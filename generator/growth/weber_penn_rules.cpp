@@ -11,7 +11,7 @@ namespace arbor::wp {
 double shapeRatio(int shape, double ratio, const Envelope& e) {
   constexpr double pi = std::numbers::pi;
   switch (shape) {
-    case 0: return 0.2 + 0.8 * ratio;                          // conical
+    case 0: return ratio;  // conical as Arbaro grows it (the paper's 0.2 + 0.8 ratio gives larches no point)
     case 1: return 0.2 + 0.8 * std::sin(pi * ratio);           // spherical
     case 2: return 0.2 + 0.8 * std::sin(0.5 * pi * ratio);     // hemispherical
     case 3: return 1.0;                                        // cylindrical
@@ -70,10 +70,15 @@ double childCountOfDeeper(double branches, double offset, double parentLength) {
   return branches * (1.0 - 0.5 * offset / parentLength);
 }
 
-bool childGrows(double length, double incomingRadius, double childRadius, double treeScale) {
+bool childGrows(double length, double childRadius) {
+  constexpr double kMinLength = 1e-5;  // Arbaro's MIN_STEM_LEN
+  return length > kMinLength && childRadius > 0.0 && std::isfinite(childRadius);
+}
+
+bool stubby(double length, double incomingRadius, double childRadius, double treeScale) {
   constexpr double kMaxSlenderness = 500.0, kMinStubness = 25.0;
-  return length >= 2.0 * incomingRadius && length >= kMinStubness * childRadius && childRadius >= 1e-5 * treeScale &&
-         childRadius * kMaxSlenderness >= length;
+  return length < 2.0 * incomingRadius || length < kMinStubness * childRadius || childRadius < 1e-5 * treeScale ||
+         childRadius * kMaxSlenderness < length;
 }
 
 Envelope envelopeOf(const SpeciesParams& p) {

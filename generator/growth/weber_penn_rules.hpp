@@ -13,7 +13,8 @@ struct Envelope {
   double width = 0.5, widthPeak = 0.5, powerLow = 0.5, powerHigh = 0.5;
 };
 
-// Shape ratio for shapes 0..8 at ratio in [0, 1] (0 = top of the crown, 1 = its base).
+// Shape ratio for shapes 0..8 at ratio in [0, 1] (0 = top of the crown, 1 = its base). Conical (0) is Arbaro's
+// `ratio`, not the paper's 0.2 + 0.8 ratio.
 double shapeRatio(int shape, double ratio, const Envelope& envelope = {});
 
 // Radius of a stem at relative position z in [0, 1] for Weber-Penn taper in [0, 3]:
@@ -39,10 +40,14 @@ double childLengthOfTrunk(const SpeciesParams& p, double lengthChildMax, double 
 // Length of a child of a deeper stem: lengthChildMax (parentLength - 0.6 offset).
 double childLengthOfDeeper(double lengthChildMax, double parentLength, double offset);
 
-// Whether a child is grown at all. Not grown: a child shorter than twice the parent's radius (it would end
-// inside the parent), a stub shorter than 25 of its own radii (pruning leaves these), one thinner than 1/500 of
-// its length (where a tapering parent runs out of wood: it could not carry itself), and a hair-thin one.
-bool childGrows(double length, double incomingRadius, double childRadius, double treeScale);
+// Whether a child is grown at all: as in Arbaro, every child longer than 10 µm with some wood grows, however
+// stubby or slender (the mesh and impostor stages decide how to draw those).
+bool childGrows(double length, double childRadius);
+
+// Whether a grown child is a stub no tube can draw well: one ending inside its parent (shorter than twice the
+// parent's radius there), shorter than 25 of its own radii, more slender than 500 (where a tapering parent runs
+// out of wood), or hair-thin. Arbaro grows these, so Arbor does; the mesh and impostor stages may leave them out.
+bool stubby(double length, double incomingRadius, double childRadius, double treeScale);
 
 // Leaves on a deepest-level stem at `offset` along its parent: |Leaves| * ShapeRatio(LeafDistrib) * LeafQuality.
 double leafCount(const SpeciesParams& p, double offset, double parentLength);
