@@ -46,6 +46,15 @@ void testPair(const QuadMesh& mesh, std::uint32_t a, std::uint32_t b, std::vecto
   }
 }
 
+// The radius the mesher built a quad for (its corners' radius attribute): tips keep a third of the ring
+// before where the skeleton's radius runs out to 0.
+double builtRadius(const QuadMesh& mesh, std::uint32_t f) {
+  if (mesh.radius.size() != mesh.positions.size()) return 0.0;
+  double r = 0.0;
+  for (std::uint32_t v : mesh.quads[f]) r = std::max(r, static_cast<double>(mesh.radius[v]));
+  return r;
+}
+
 void sortHits(std::vector<QuadPairHit>& hits) {
   std::sort(hits.begin(), hits.end(), [](const QuadPairHit& x, const QuadPairHit& y) {
     return x.a != y.a ? x.a < y.a : x.b < y.b;
@@ -142,8 +151,8 @@ SelfIntersectionReport checkSelfIntersections(const TreeMesh& tree, const Skelet
     h.stemB = h.b < tree.quadStem.size() ? tree.quadStem[h.b] : -1;
     h.relation = relationOf(skeleton, h.stemA, h.stemB);
     if (h.relation != StemRelation::Hub) {
-      h.reachA = stemReach(capsules[static_cast<std::size_t>(h.stemA)], h.point);
-      h.reachB = stemReach(capsules[static_cast<std::size_t>(h.stemB)], h.point);
+      h.reachA = stemReach(capsules[static_cast<std::size_t>(h.stemA)], h.point, builtRadius(tree.mesh, h.a));
+      h.reachB = stemReach(capsules[static_cast<std::size_t>(h.stemB)], h.point, builtRadius(tree.mesh, h.b));
     }
     // Both stems' skeletons must reach the point: then the branches themselves cross there.
     const bool wood = h.contact != QuadContact::Edge && h.relation != StemRelation::Hub &&

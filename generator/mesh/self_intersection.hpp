@@ -24,7 +24,8 @@ struct QuadPairHit {
   QuadContact contact = QuadContact::Apart;
   PairOrigin origin = PairOrigin::Unclassified;
   StemRelation relation = StemRelation::Hub;
-  double reachA = 0, reachB = 0;  // the point's distance from each stem's skeleton axis, in its radii there
+  double reachA = 0, reachB = 0;  // the point's distance from each stem's skeleton axis, in its radii there (or
+                                  // the radius its quad was built for, when larger: tips)
 };
 
 struct SelfIntersectionReport {
@@ -49,8 +50,8 @@ std::vector<QuadPairHit> findIntersectingQuadsBruteForce(const QuadMesh& mesh);
 SelfIntersectionReport checkSelfIntersections(const QuadMesh& mesh);
 
 // A tree's mesh with its skeleton: each pair classified, skeleton-made when the point lies within both
-// stems' capsules (past where each leaves the stem it grows from), mesh-made otherwise; folds and pairs
-// within one stem are always mesh-made.
+// stems' capsules (past where each leaves the stem it grows from; radii at least those the quads were built
+// for), mesh-made otherwise; folds and pairs within one stem are always mesh-made.
 SelfIntersectionReport checkSelfIntersections(const TreeMesh& tree, const Skeleton& skeleton);
 
 // The number the mesher must bring to 0: pairs of quads that intersect where the skeleton does not.

@@ -17,20 +17,20 @@ constexpr double kMinSine = 0.25;
 
 }  // namespace
 
-double capsuleReach(const Capsule& c, const Vec3& x) {
+double capsuleReach(const Capsule& c, const Vec3& x, double minRadius) {
   const Vec3 axis = c.b - c.a;
   const double len2 = glm::dot(axis, axis);
   double t = len2 > 0.0 ? glm::dot(x - c.a, axis) / len2 : 0.0;
   if (t < 0.0 && c.flatStart) return std::numeric_limits<double>::infinity();
   t = std::clamp(t, 0.0, 1.0);
-  const double r = c.ra + (c.rb - c.ra) * t;
+  const double r = std::max(minRadius, c.ra + (c.rb - c.ra) * t);
   const double d = glm::distance(x, c.a + axis * t);
   return r > 0.0 ? d / r : (d > 0.0 ? std::numeric_limits<double>::infinity() : 0.0);
 }
 
-double stemReach(const std::vector<Capsule>& stem, const Vec3& x) {
+double stemReach(const std::vector<Capsule>& stem, const Vec3& x, double minRadius) {
   double best = std::numeric_limits<double>::infinity();
-  for (const Capsule& c : stem) best = std::min(best, capsuleReach(c, x));
+  for (const Capsule& c : stem) best = std::min(best, capsuleReach(c, x, minRadius));
   return best;
 }
 

@@ -18,10 +18,11 @@ struct Capsule {
 // overlap by construction, and what the mesh does there is the neck's doing.
 std::vector<std::vector<Capsule>> stemCapsules(const Skeleton& skeleton);
 
-// Distance from x to the capsule's axis over its radius there: <= 1 inside; infinite before a flat start.
-double capsuleReach(const Capsule& c, const Vec3& x);
+// Distance from x to the capsule's axis over its radius there (at least minRadius: the mesh keeps tips
+// thicker than the skeleton's, which tapers to 0): <= 1 inside; infinite before a flat start.
+double capsuleReach(const Capsule& c, const Vec3& x, double minRadius = 0.0);
 
 // The smallest reach of x over a stem's capsules (infinite for a stem without any).
-double stemReach(const std::vector<Capsule>& stem, const Vec3& x);
+double stemReach(const std::vector<Capsule>& stem, const Vec3& x, double minRadius = 0.0);
 
 }  // namespace arbor
