@@ -39,6 +39,10 @@ struct PortStart {
   Vec3 parentAxis{0.0};     // the slab's axis: a side child's tube starts once clear of the parent
   double parentReach = 0.0; // distance of the parent's corners from that axis
   std::size_t parentFacesBegin = 0, parentFacesEnd = 0;  // the parent stem's quads, complete by then
+  // A child attached before its parent's tube begins (moved to the first slab) also clears its grandparent.
+  bool clearGrandparent = false;
+  Vec3 grandPoint{0.0}, grandAxis{0.0};
+  double grandReach = 0.0;
 };
 
 class Builder {
@@ -74,12 +78,16 @@ class Builder {
   std::vector<int> uvwCount_;
   std::vector<std::uint8_t> portUse_;      // per vertex: how many ports it is a corner of
   int currentStem_ = -1;                   // stem whose faces are being emitted
+  const PortStart* currentStart_ = nullptr;  // how that stem left its parent (null: a trunk)
+  bool connectingMoved_ = false;           // the slab being connected holds children moved to the tube's start
   std::vector<std::pair<int, PortStart>>* deferred_ = nullptr;  // children waiting for their parent
   FaceGrid grid_;
   std::size_t gridBegin_ = 0, gridEnd_ = 0;
 
+  // Stubs (shorter than a tube can be, hair-thin, or ending inside their parent) are drawn as fake branches.
   bool meshed(int stem) const {
-    return opt_.levels <= 0 || sk_.stems[static_cast<std::size_t>(stem)].level < opt_.levels;
+    const SkeletonStem& st = sk_.stems[static_cast<std::size_t>(stem)];
+    return !st.stub && (opt_.levels <= 0 || st.level < opt_.levels);
   }
 
   std::string tooManyQuads(double extraRings) const {
@@ -113,7 +121,7 @@ class Builder {
 
   Vec3 position(std::uint32_t v) const { return Vec3(out_.mesh.positions[v]); }
 
-  Ring emitRing(int stem, const Vec3& center, const RingFrame& frame, double radius, double tex) {
+  Ring emitRing(int stem, const Vec3& center, const RingFrame& frame, double radius, double tex, double arc = -1.0) {
     Ring r;
     r.frame = frame;
     r.center = center;
@@ -126,7 +134,7 @@ class Builder {
       r.v[static_cast<std::size_t>(k)] = addVertex(center + offsets[static_cast<std::size_t>(k)], radius, level, frame.T);
       addUvw(r.v[static_cast<std::size_t>(k)], k, tex);
     }
-    out_.rings.push_back(MeshRing{stem, r.v, center, tex, radius});
+    out_.rings.push_back(MeshRing{stem, r.v, center, tex, radius, arc});
     return r;
   }
 
@@ -181,12 +189,15 @@ class Builder {
     std::vector<std::pair<int, PortStart>> children;
     auto* outerDeferred = deferred_;
     const int outer = currentStem_;
+    const PortStart* outerStart = currentStart_;
     deferred_ = &children;
     currentStem_ = stem;
+    currentStart_ = start;
     const std::size_t begin = out_.mesh.quads.size();
     buildStemFaces(stem, start);
     buildChildren(children, begin);
     currentStem_ = outer;
+    currentStart_ = outerStart;
     deferred_ = outerDeferred;
   }
 
@@ -202,21 +213,21 @@ class Builder {
   void buildStemFaces(int stem, const PortStart* start) {
     const StemPolyline poly(sk_, stem);
     Ring last;
-    double sLo = 0.0, slabStart = 0.0;
+    double sLo = 0.0;
     if (!start) {
       const RingFrame frame = frameFromHint(poly.startDirection(), Vec3(1, 0, 0));
-      last = emitRing(stem, poly.position(0.0), frame, poly.radius(0.0), 0.0);
+      last = emitRing(stem, poly.position(0.0), frame, poly.radius(0.0), 0.0, 0.0);
       if (opt_.openBase) out_.mesh.openBoundary.assign(last.v.begin(), last.v.end());
       else addQuad(last.v[3], last.v[2], last.v[1], last.v[0]);
     } else {
-      last = leavePort(stem, poly, *start, sLo, slabStart);
+      last = leavePort(stem, poly, *start, sLo);
     }
-    continueStem(stem, poly, last, sLo, slabStart, start);
+    continueStem(stem, poly, last, sLo, start);
   }
 
   // The child's first cross section sits just outside the port, leaving between the port's normal and
   // the child's direction; a child that points backwards leaves straight out first (backward connection).
-  Ring leavePort(int stem, const StemPolyline& poly, const PortStart& start, double& sLo, double& slabStart) {
+  Ring leavePort(int stem, const StemPolyline& poly, const PortStart& start, double& sLo) {
     const auto& q = start.port;
     Ring port = portRing(q);
     const Vec3 center = port.center;
@@ -238,23 +249,50 @@ class Builder {
     const double exitRadius = std::max(rc, 0.5 * portRadius / opt_.limitCompensation);
     const double e0 = std::max(2.0 * exitRadius * opt_.limitCompensation, 0.35 * portRadius);
     const std::array<Vec3, 4> portCorners{position(q[0]), position(q[1]), position(q[2]), position(q[3])};
-    Vec3 exitDir = preferred;
+    if (!start.top) {
+      // Best: the collar ends on the child's own skeleton where it has cleared the parent, so its tube, and
+      // the slabs of its own children, begin where the skeleton leaves the parent.
+      const double reach = std::sqrt(0.5) * start.parentReach + exitRadius * opt_.limitCompensation;
+      const double s = std::max(poly.firstClearOf(start.branchPoint, start.parentAxis, reach), grandClearance(poly, start, exitRadius));
+      const Vec3 c = poly.position(s);
+      // Only where that is close to the attachment: a child leaving at a shallow angle keeps its collar there.
+      const double along = std::abs(glm::dot(c - start.branchPoint, start.parentAxis));
+      if (s < 0.5 * poly.length() && along < 1.2 * start.parentReach / opt_.limitCompensation &&
+          glm::dot(c - center, normal) > 0.5 * exitRadius * opt_.limitCompensation) {
+        const RingFrame frame = transportFrame(port.frame, poly.direction(s));
+        const auto offsets = ringOffsets(frame, exitRadius * opt_.limitCompensation);
+        const std::array<Vec3, 4> corners{c + offsets[0], c + offsets[1], c + offsets[2], c + offsets[3]};
+        if (!bandCrossesParent(start, portCorners, corners)) {
+          for (int k = 0; k < 4; ++k) addUvw(q[static_cast<std::size_t>(k)], k, port.tex);  // child-then-parent averaging
+          const Ring exit = emitRing(stem, c, frame, exitRadius, port.tex + barkTextureAdvance(glm::distance(c, center), exitRadius), s);
+          band(port, exit);
+          sLo = s;
+          return exit;
+        }
+      }
+    }
+    // The first cross section also stays within 1.5 parent radii of the attachment along the parent: a neck
+    // that does not cut the parent and keeps that wins, then one that does not cut it, then the straight one.
+    const double along = start.parentReach > 0.0 ? 1.45 * start.parentReach / opt_.limitCompensation : 1e300;
+    Vec3 exitDir = normal;
     double e = e0;
+    int best = 0;  // 2: clear and near, 1: clear
     for (const Vec3& dir : {preferred, normal}) {
-      bool found = false;
       for (double scale : {1.0, 1.6, 2.5}) {
         const Vec3 c = center + dir * (e0 * scale);
         // A child leaving straight against its port (dir = -d) leaves along the port first: backward connection.
         const auto offsets = ringOffsets(transportFrame(port.frame, directionOr(dir + d, dir)), exitRadius * opt_.limitCompensation);
         const std::array<Vec3, 4> corners{c + offsets[0], c + offsets[1], c + offsets[2], c + offsets[3]};
-        if (!bandCrossesParent(start, portCorners, corners)) {
+        if (bandCrossesParent(start, portCorners, corners)) continue;
+        const int score = std::abs(glm::dot(c - start.branchPoint, start.parentAxis)) <= along ? 2 : 1;
+        if (score > best) {
+          best = score;
           exitDir = dir;
           e = e0 * scale;
-          found = true;
-          break;
         }
+        if (best == 2) break;
       }
-      if (found) break;
+      if (best == 2) break;
     }
     const Vec3 exitCenter = center + exitDir * e;
     for (int k = 0; k < 4; ++k) addUvw(q[static_cast<std::size_t>(k)], k, port.tex);  // child-then-parent averaging
@@ -263,18 +301,23 @@ class Builder {
     sLo = poly.firstBeyond(start.branchPoint, glm::distance(exitCenter, start.branchPoint) + 0.5 * rc);
     if (!start.top) {
       // A child at a small angle runs along its parent; its tube begins where its skeleton has left the parent.
-      const double clearance = start.parentReach + rc * opt_.limitCompensation;
+      const double clearance = std::sqrt(0.5) * start.parentReach + rc * opt_.limitCompensation;
       sLo = std::max(sLo, poly.firstClearOf(start.branchPoint, start.parentAxis, clearance));
     }
+    sLo = std::max(sLo, grandClearance(poly, start, rc));
     const auto offsets = ringOffsets(exitFrame, exitRadius * opt_.limitCompensation);
     const std::array<Vec3, 4> exitCorners{exitCenter + offsets[0], exitCenter + offsets[1], exitCenter + offsets[2],
                                           exitCenter + offsets[3]};
     sLo = clearOfParent(poly, start, exitFrame, exitCorners, sLo, 0.25 * std::max(portRadius, rc));
     const Ring exit = emitRing(stem, exitCenter, exitFrame, exitRadius, port.tex + barkTextureAdvance(e, exitRadius));
     band(port, exit);
-    // The neck from the port widens towards the parent: grandchildren connect beyond its width.
-    slabStart = std::min(sLo + 2.0 * portRadius, poly.length());
     return exit;
+  }
+
+  // Where a moved child's skeleton has cleared its grandparent's cross sections with a ring of `radius`.
+  double grandClearance(const StemPolyline& poly, const PortStart& start, double radius) const {
+    if (!start.clearGrandparent) return 0.0;
+    return poly.firstClearOf(start.grandPoint, start.grandAxis, std::sqrt(0.5) * start.grandReach + radius * opt_.limitCompensation);
   }
 
   // Corners of the cross section a stem would get at arc length s, continuing from `from`.
@@ -334,65 +377,105 @@ class Builder {
   }
 
   struct Slab {
-    double lo = 0, hi = 0, center = 0, h = 0;
+    double lo = 0, hi = 0, h = 0;
+    double first = 0, last = 0;  // its first and last attachment
     double need = 0;  // radius its cross sections need to hold its largest child
     int node = -1;
     std::vector<int> children;
+    bool moved = false;  // its children attach before the tube begins (or past its end) and were moved
   };
 
-  void continueStem(int stem, const StemPolyline& poly, Ring last, double sLo, double slabStart, const PortStart* start) {
+  // Distance kept between plain cross sections: half the local radius (never zero on hair-thin twigs).
+  double gapAt(const StemPolyline& poly, double s) const {
+    return std::max(0.5 * poly.radius(std::min(s, poly.length())), 1e-6 * sk_.treeScale);
+  }
+
+  // Connection slabs centred on their attachments, never pushed along the stem (a pushed slab's first
+  // band runs back to its skeleton and cuts other branches). Attachments within a parent radius share a
+  // slab (up to three children, a side spare); attachments that nearly coincide share one whatever their
+  // number, through sub-boxes. Neighbouring slabs shrink to meet halfway: one-child slabs share the cross
+  // section there, busier ones keep a thin band between them, so no corner is in more than two ports.
+  // Children attached before the tube begins (inside the stem's own parent) join the first slab.
+  std::vector<Slab> layOutSlabs(int stem, const StemPolyline& poly, double from, double to) const {
     const SkeletonStem& st = sk_.stems[static_cast<std::size_t>(stem)];
     const int lastNode = st.firstNode + st.nodeCount - 1;
-    const bool split = sk_.nodes[static_cast<std::size_t>(lastNode)].kind == NodeKind::Split &&
-                       !stemsAt_[static_cast<std::size_t>(lastNode)].empty();
-    const double sEnd = poly.length();
-
-    // Connection slabs around each attachment with meshed children, merged where they would overlap.
     std::vector<Slab> slabs;
     for (int i = 0; i < poly.pointCount(); ++i) {
       const int node = poly.node(i);
       if (node == st.attachNode || node == lastNode) continue;
       const auto& children = stemsAt_[static_cast<std::size_t>(node)];
       if (children.empty()) continue;
-      const double s = poly.arcLength(i);
-      const double ra = poly.radius(s - 1e-9);
+      const double ra = std::max(poly.radius(poly.arcLength(i) - 1e-9), 1e-6 * sk_.treeScale);
       double rc = 0.0;
       for (int c : children) rc = std::max(rc, sk_.stems[static_cast<std::size_t>(c)].startRadius);
-      const double h = std::clamp(1.2 * rc, 0.3 * ra, ra);
-      Slab slab{s - h, s + h, s, h, rc, node, children};
-      if (!slabs.empty() && slab.center - slabs.back().center < 0.6 * (slab.h + slabs.back().h) &&
-          slabs.back().children.size() + children.size() <= 3) {
-        Slab& prev = slabs.back();  // too close for a slab each: one slab carries up to three (a side spare)
-        prev.children.insert(prev.children.end(), children.begin(), children.end());
-        prev.hi = std::max(prev.hi, slab.hi);
-        prev.h = std::max(prev.h, slab.h);
-        prev.need = std::max(prev.need, slab.need);
-        continue;
+      // The thinnest slab a child gets: a sixth of the parent's width.
+      const double hMin = 0.15 * ra;
+      const double s = to - from > 2.0 * hMin ? std::clamp(poly.arcLength(i), from + hMin, to - hMin) : from + hMin;
+      const bool moved = s != poly.arcLength(i);
+      if (!slabs.empty()) {
+        Slab& prev = slabs.back();
+        const bool coincide = s - prev.first < 2.0 * hMin;
+        // A slab of children moved to the tube's start takes no others but those right beside them.
+        const bool fits = s - prev.first < ra && prev.children.size() + children.size() <= 3 && prev.moved == moved;
+        if (coincide || fits) {
+          prev.children.insert(prev.children.end(), children.begin(), children.end());
+          prev.last = s;
+          prev.h = std::max(prev.h, std::clamp(1.2 * rc, 0.3 * ra, ra));
+          prev.need = std::max(prev.need, rc);
+          continue;
+        }
       }
-      slabs.push_back(std::move(slab));
+      const double h = std::clamp(1.2 * rc, 0.3 * ra, ra);
+      slabs.push_back(Slab{s - h, s + h, h, s, s, rc, node, children, moved});
     }
-    // Overlapping slabs of one child each share a cross section; busier ones keep a band between them,
-    // so no corner ever belongs to more than two ports.
+    for (Slab& slab : slabs) {
+      slab.lo = std::max(slab.first - slab.h, from);
+      slab.hi = slab.last + slab.h;
+    }
+    if (!slabs.empty()) {
+      Slab& end = slabs.back();  // ends before the tip (or the split), however close to it its child attaches
+      end.hi = std::min(end.hi, to);
+      if (end.hi <= end.last) end.hi = end.last + 0.5 * (to - end.last);
+    }
     for (std::size_t j = 1; j < slabs.size(); ++j) {
       Slab& a = slabs[j - 1];
       Slab& b = slabs[j];
-      if (b.lo < a.hi && a.children.size() == 1 && b.children.size() == 1) {
-        const double mid = 0.5 * (a.center + b.center);
-        a.hi = mid;
-        b.lo = mid;
-      }
+      const double room = b.first - a.last;
+      if (b.lo >= a.hi + 0.2 * room) continue;
+      const double mid = 0.5 * (a.last + b.first);
+      const bool share = a.children.size() == 1 && b.children.size() == 1;
+      a.hi = share ? mid : mid - 0.1 * room;
+      b.lo = share ? mid : mid + 0.1 * room;
     }
+    return slabs;
+  }
 
-    // Forward pass: every ring at least a quarter radius after the previous one (the stem may lengthen).
-    auto gap = [&](double s) { return std::max(0.5 * poly.radius(std::min(s, sEnd)), 1e-6 * sk_.treeScale); };
-    double cursor = std::max(sLo, slabStart - gap(slabStart));
-    for (std::size_t j = 0; j < slabs.size(); ++j) {
-      Slab& slab = slabs[j];
-      const bool shared = j > 0 && slab.lo == slabs[j - 1].hi;
-      slab.lo = shared ? cursor : std::max(slab.lo, cursor + gap(cursor));
-      slab.hi = std::max(slab.hi, slab.lo + slab.h);
-      cursor = slab.hi;
+  void continueStem(int stem, const StemPolyline& poly, Ring last, double sLo, const PortStart* start) {
+    const SkeletonStem& st = sk_.stems[static_cast<std::size_t>(stem)];
+    const int lastNode = st.firstNode + st.nodeCount - 1;
+    const bool split = sk_.nodes[static_cast<std::size_t>(lastNode)].kind == NodeKind::Split &&
+                       !stemsAt_[static_cast<std::size_t>(lastNode)].empty();
+    const double sEnd = poly.length();
+
+    // Where slabs may lie: after the first cross section, and before the tip or the split slab.
+    const double tubeStart = start ? sLo + 0.25 * poly.radius(sLo) : 0.0;
+    Slab splitSlab;
+    double slabsEnd = sEnd;
+    if (split) {
+      const auto& clones = stemsAt_[static_cast<std::size_t>(lastNode)];
+      double rc = 0.0;
+      for (int c : clones) rc = std::max(rc, sk_.stems[static_cast<std::size_t>(c)].startRadius);
+      const double ra = poly.radius(sEnd);
+      splitSlab.h = std::clamp(1.2 * rc, 0.5 * ra, ra);
+      splitSlab.node = lastNode;
+      splitSlab.need = rc;
+      splitSlab.children = clones;
+      splitSlab.lo = std::max(sEnd - splitSlab.h, tubeStart);
+      splitSlab.hi = splitSlab.lo + 2.0 * splitSlab.h;
+      slabsEnd = splitSlab.lo;
     }
+    const std::vector<Slab> slabs = layOutSlabs(stem, poly, tubeStart, slabsEnd);
+    auto gap = [&](double at) { return gapAt(poly, at); };
 
     // Plain cross sections at the stem's own nodes outside slabs, then extra ones for even spacing.
     std::vector<std::pair<double, int>> stations;  // arc length, slab index ending there (-1: plain)
@@ -419,25 +502,12 @@ class Builder {
     std::stable_sort(stations.begin(), stations.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
 
     double endS = sEnd;
-    Slab splitSlab;
     if (split) {
-      const auto& clones = stemsAt_[static_cast<std::size_t>(lastNode)];
-      double rc = 0.0;
-      for (int c : clones) rc = std::max(rc, sk_.stems[static_cast<std::size_t>(c)].startRadius);
-      const double ra = poly.radius(sEnd);
-      splitSlab.h = std::clamp(1.2 * rc, 0.5 * ra, ra);
-      splitSlab.node = lastNode;
-      splitSlab.need = rc;
-      splitSlab.children = clones;
-      const double after = stations.empty() ? sLo : stations.back().first;
-      splitSlab.lo = std::max(sEnd - splitSlab.h, after + gap(after));
-      splitSlab.hi = splitSlab.lo + 2.0 * splitSlab.h;
       endS = splitSlab.lo;
     } else {
+      // The tip ring sits at the skeleton's tip; only a station right at the tip moves it on a little.
       const double after = stations.empty() ? sLo : stations.back().first;
-      endS = std::max(sEnd, after + gap(after));
-      // A child right at the tip would run into the cap: the tip stays three radii past the last slab.
-      if (!slabs.empty()) endS = std::max(endS, slabs.back().hi + 3.0 * poly.radius(std::min(slabs.back().hi, sEnd)));
+      endS = std::max(sEnd, after + 0.1 * gap(after));
     }
     while (!stations.empty() && stations.back().first > endS - gap(endS) * 0.5) {
       if (stations.back().second == -2) stations.pop_back();
@@ -445,14 +515,13 @@ class Builder {
     }
     stations.emplace_back(endS, split ? -3 : -4);
 
-    // leavePort cleared the band from the first cross section to arc length sLo; where the first station
-    // lies further on and its band would cut the parent, a cross section at sLo comes first.
-    if (start && sLo < stations.front().first) {
-      std::array<Vec3, 4> exitCorners;
-      for (int k = 0; k < 4; ++k) exitCorners[static_cast<std::size_t>(k)] = position(last.v[static_cast<std::size_t>(k)]);
-      if (bandCrossesParent(*start, exitCorners, ringCorners(poly, last.frame, stations.front().first))) {
-        last = advance(stem, poly, last, sLo);
-      }
+    // leavePort cleared the band from the first cross section to arc length sLo; where the first station lies
+    // further on, a cross section at sLo comes first: the tube is back on its skeleton at its own radius right
+    // after the collar, instead of a long cone from the collar (a wide, off-axis first band that cuts others).
+    // Never behind the collar's cross section: that would fold the tube back on itself.
+    if (start && sLo < stations.front().first - 4.0 * gap(sLo) &&
+        glm::dot(poly.position(sLo) - last.center, last.frame.T) > 0.0) {
+      last = advance(stem, poly, last, sLo);
     }
     double previousS = sLo;
     for (const auto& [s, role] : stations) {
@@ -476,7 +545,7 @@ class Builder {
         const Vec3 p = poly.position(s);
         const double r = std::max(poly.radius(std::min(s, sEnd)), 0.35 * last.radius);
         const RingFrame frame = transportFrame(last.frame, poly.endDirection());
-        const Ring tip = emitRing(stem, p, frame, r, last.tex + barkTextureAdvance(glm::distance(p, last.center), r));
+        const Ring tip = emitRing(stem, p, frame, r, last.tex + barkTextureAdvance(glm::distance(p, last.center), r), s);
         band(last, tip);
         addQuad(tip.v[0], tip.v[1], tip.v[2], tip.v[3]);
         return;
@@ -508,7 +577,7 @@ class Builder {
     const Vec3 p = poly.position(s);
     const double r = std::max({poly.radius(s), minRadius, 1e-5 * sk_.treeScale});
     const RingFrame frame = transportFrame(last.frame, poly.direction(s));
-    return emitRing(stem, p, frame, r, last.tex + barkTextureAdvance(glm::distance(p, last.center), 0.5 * (r + last.radius)));
+    return emitRing(stem, p, frame, r, last.tex + barkTextureAdvance(glm::distance(p, last.center), 0.5 * (r + last.radius)), s);
   }
 
   Ring advance(int stem, const StemPolyline& poly, const Ring& last, double s) {
@@ -583,12 +652,13 @@ class Builder {
     }
     const Vec3 branchPoint = joint.center;
     if (top && a.top >= 0) {
-      deferred_->emplace_back(children[static_cast<std::size_t>(a.top)], PortStart{top->v, branchPoint, true, axis, 0.0});
+      deferred_->emplace_back(children[static_cast<std::size_t>(a.top)], withGrandparent(PortStart{top->v, branchPoint, true, axis, 0.0}));
     }
-    const double reach = std::max(lo.radius, hi.radius) * opt_.limitCompensation;
+    // Past a split the parent's axis runs on through the clone on top, not the parent: clones need no clearance.
+    const double reach = top ? 0.0 : std::max(lo.radius, hi.radius) * opt_.limitCompensation;
     for (auto& [q, stems] : ports) {
       if (stems.size() == 1) {
-        deferred_->emplace_back(stems[0], PortStart{q, branchPoint, false, axis, reach});
+        deferred_->emplace_back(stems[0], withGrandparent(PortStart{q, branchPoint, false, axis, reach}));
       } else {
         ++joint.subBoxes;
         subBox(parentStem, node, q, stems);
@@ -598,7 +668,19 @@ class Builder {
   }
 
   void connectSlab(int stem, const Ring& lo, const Ring& hi, const Slab& slab) {
+    connectingMoved_ = slab.moved && currentStart_ && !currentStart_->top;
     connect(stem, slab.node, lo, hi, slab.children, nullptr, false);
+    connectingMoved_ = false;
+  }
+
+  // A moved child's skeleton starts where its parent is still beside the grandparent: it must clear that too.
+  PortStart withGrandparent(PortStart p) const {
+    if (!connectingMoved_) return p;
+    p.clearGrandparent = true;
+    p.grandPoint = currentStart_->branchPoint;
+    p.grandAxis = currentStart_->parentAxis;
+    p.grandReach = currentStart_->parentReach;
+    return p;
   }
 
   // An equal split (Nystad app. D): the clones leave through the top and the sides of a last slab;

@@ -16,6 +16,7 @@ struct MeshRing {
   Vec3 center{0.0};
   double v = 0;
   double radius = 0;  // skeleton radius (the corners sit at limitCompensation times this)
+  double arc = -1;    // arc length along its stem's skeleton (-1: a neck or sub-box ring, off the skeleton)
 };
 
 // A branch point as built: the parent stem, the children connected there and how.
