@@ -6,6 +6,8 @@
 #include <initializer_list>
 #include <limits>
 #include <optional>
+#include <ostream>
+#include <sstream>
 #include <stdexcept>
 #include <string_view>
 #include <vector>
@@ -36,7 +38,9 @@ template <std::size_t N>
 void appendFace(std::string& out, const std::array<std::uint32_t, N>& corners) {
   out += 'f';
   for (const std::uint32_t v : corners) {
-    const std::string index = std::to_string(std::uint64_t{v} + 1);  // OBJ counts from 1
+    char digits[24];
+    const auto end = std::to_chars(digits, digits + sizeof digits, std::uint64_t{v} + 1).ptr;  // OBJ counts from 1
+    const std::string_view index(digits, static_cast<std::size_t>(end - digits));
     out += ' ';
     out += index;
     out += '/';
@@ -125,7 +129,7 @@ std::optional<Quad> joinTriangles(const Triangle& first, const Triangle& second)
 
 }  // namespace
 
-std::string writeObj(const QuadMesh& mesh, bool triangles) {
+void writeObj(const QuadMesh& mesh, bool triangles, std::ostream& stream) {
   exporting::requirePerVertex(mesh, mesh.normals.size(), "normals", "writeObj");
   exporting::requirePerVertex(mesh, mesh.uvw.size(), "uvw", "writeObj");
   exporting::requireQuadIndicesInRange(mesh, "writeObj");
@@ -133,20 +137,49 @@ std::string writeObj(const QuadMesh& mesh, bool triangles) {
   const auto triangleList = triangles ? triangulate(mesh) : std::vector<Triangle>{};
   const std::size_t faceCount = triangles ? triangleList.size() : mesh.quads.size();
 
+  // Written a megabyte at a time: a tree's OBJ is tens of megabytes, and building it whole cost page faults.
   std::string out;
-  out.reserve(mesh.vertexCount() * 100 + faceCount * 40);
+  constexpr std::size_t kChunk = 1 << 20;
+  out.reserve(kChunk + 256);
+  auto flush = [&](bool always) {
+    if (always || out.size() >= kChunk) {
+      stream.write(out.data(), static_cast<std::streamsize>(out.size()));
+      out.clear();
+    }
+  };
   out += "# Arbor tree mesh: object space in metres, z up\n";
   out += "# " + std::to_string(mesh.vertexCount()) + " vertices, " + std::to_string(faceCount) +
          (triangles ? " triangles" : " quads") + "; vt is (u, v), the flip coordinate is not stored\n";
-  for (const auto& p : mesh.positions) appendLine(out, "v", {p.x, p.y, p.z});
-  for (const auto& t : mesh.uvw) appendLine(out, "vt", {t.x, t.y});
-  for (const auto& n : mesh.normals) appendLine(out, "vn", {n.x, n.y, n.z});
-  if (triangles) {
-    for (const auto& t : triangleList) appendFace(out, t);
-  } else {
-    for (const auto& q : mesh.quads) appendFace(out, q);
+  for (const auto& p : mesh.positions) {
+    appendLine(out, "v", {p.x, p.y, p.z});
+    flush(false);
   }
-  return out;
+  for (const auto& t : mesh.uvw) {
+    appendLine(out, "vt", {t.x, t.y});
+    flush(false);
+  }
+  for (const auto& n : mesh.normals) {
+    appendLine(out, "vn", {n.x, n.y, n.z});
+    flush(false);
+  }
+  if (triangles) {
+    for (const auto& t : triangleList) {
+      appendFace(out, t);
+      flush(false);
+    }
+  } else {
+    for (const auto& q : mesh.quads) {
+      appendFace(out, q);
+      flush(false);
+    }
+  }
+  flush(true);
+}
+
+std::string writeObj(const QuadMesh& mesh, bool triangles) {
+  std::ostringstream out;
+  writeObj(mesh, triangles, out);
+  return std::move(out).str();
 }
 
 QuadMesh readObj(const std::string& text, const std::string& file) {

@@ -1,6 +1,7 @@
 #pragma once
 // Wavefront OBJ for artists' tools: the quad mesh as it is, object space in metres, z up.
 // One vertex carries one position, one texture coordinate and one normal, so every face corner is "i/i/i".
+#include <ostream>
 #include <string>
 
 #include "mesh/quad_mesh.hpp"
@@ -12,6 +13,8 @@ namespace arbor {
 // shortest form that reads back as the same float. Needs positions, uvw and normals for every vertex;
 // throws std::invalid_argument otherwise.
 std::string writeObj(const QuadMesh& mesh, bool triangles);
+// The same, streamed a megabyte at a time (a tree's OBJ is tens of megabytes).
+void writeObj(const QuadMesh& mesh, bool triangles, std::ostream& out);
 
 // Reads what writeObj writes: v, vt, vn and f lines with 1-based "a/a/a" corners; comments, o, g, s,
 // mtllib and usemtl are skipped. Triangles must come in the consecutive pairs writeObj emits, and each

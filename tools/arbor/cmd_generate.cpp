@@ -79,17 +79,18 @@ int runGenerate(const GenerateOptions& o) {
 
   std::string content;
   TreeMesh tree;
-  QuadMesh exported;
+  QuadMesh subdivided;
   double meshMs = 0.0;
   if (type != OutputType::Skeleton) {
     tree = buildTreeMesh(skeleton, o.mesh);
     meshMs = ms(t1, Clock::now());
-    exported = o.subdivide > 0 ? subdivide(tree.mesh, o.subdivide) : tree.mesh;
-    if (type == OutputType::Obj) content = writeObj(exported, o.triangles);
-    if (type == OutputType::Gltf) content = writeGltf(exported, params.name);
-    if (type == OutputType::Glb) content = writeGlb(exported, params.name);
+    if (o.subdivide > 0) subdivided = subdivide(tree.mesh, o.subdivide);
   }
+  const QuadMesh& exported = o.subdivide > 0 ? subdivided : tree.mesh;
+  if (type == OutputType::Gltf) content = writeGltf(exported, params.name);
+  if (type == OutputType::Glb) content = writeGlb(exported, params.name);
   if (type == OutputType::Skeleton) writeFileAtomically(o.out, [&](std::ostream& out) { writeSkeletonJson(skeleton, out); });
+  else if (type == OutputType::Obj) writeFileAtomically(o.out, [&](std::ostream& out) { writeObj(exported, o.triangles, out); });
   else writeFileAtomically(o.out, content);
   if (o.quiet) return 0;
 
