@@ -9,6 +9,7 @@
 #include "growth/weber_penn.hpp"
 #include "mesh/joint_checks.hpp"
 #include "mesh/self_intersection.hpp"
+#include "mesh/stem_polyline.hpp"
 #include "mesh/tree_mesh.hpp"
 #include "species/species_io.hpp"
 #include "test_support.hpp"
@@ -139,7 +140,18 @@ TEST_CASE("measure: where the mesh-made crossings are", "[.measure-cross]") {
     };
     std::string a = band(h.a, h.stemA), b = band(h.b, h.stemB);
     if (b < a) std::swap(a, b);
-    ++hist[std::string(stemRelationName(h.relation)) + " " + a + " x " + b];
+    std::string gapClass = "";
+    if (std::getenv("ARBOR_GAP") && h.stemA >= 0 && h.stemB >= 0) {
+      const StemPolyline pa(s, h.stemA), pb(s, h.stemB);
+      double best = 1e30;
+      for (int i = 0; i <= 60; ++i)
+        for (int k = 0; k <= 60; ++k) {
+          const double sa = pa.length() * i / 60.0, sb = pb.length() * k / 60.0;
+          best = std::min(best, glm::distance(pa.position(sa), pb.position(sb)) / (pa.radius(sa) + pb.radius(sb) + 1e-12));
+        }
+      gapClass = best < 1 ? " gap<1" : best < 2 ? " gap1-2" : best < 4 ? " gap2-4" : " gap>4";
+    }
+    ++hist[std::string(stemRelationName(h.relation)) + " " + a + " x " + b + gapClass];
     if (std::getenv("ARBOR_SHOW") && (a + " x " + b) == std::getenv("ARBOR_SHOW")) {
       auto info = [&](int stem) {
         const SkeletonStem& st = s.stems[static_cast<std::size_t>(stem)];

@@ -190,6 +190,17 @@ TEST_CASE("a child's capsules start where its axis leaves its parent's wood", "[
   CHECK(stemReach(capsules[1], Vec3(0, 0, 0.1)) == Approx(1.0));  // on the child's surface further out
 }
 
+TEST_CASE("where two stems' wood overlaps: near the crossing of their capsules, never for stems apart", "[mesh][self-intersection]") {
+  const std::vector<Capsule> a{Capsule{Vec3(-1, 0, 0), Vec3(1, 0, 0), 0.1, 0.1}};
+  const std::vector<Capsule> b{Capsule{Vec3(0, -1, 0.05), Vec3(0, 1, 0.05), 0.1, 0.1}};   // crosses a at the origin
+  const std::vector<Capsule> c{Capsule{Vec3(0, -1, 0.5), Vec3(0, 1, 0.5), 0.1, 0.1}};    // passes 0.5 above a
+  CHECK(distanceToOverlap(a, b, Vec3(0, 0, 0), 1.0) < 0.3);
+  CHECK(distanceToOverlap(a, b, Vec3(0.3, 0, 0), 1.0) == Approx(1.5 / 1.0).epsilon(0.05));  // 0.3 / (0.1 + 0.1)
+  CHECK(std::isinf(distanceToOverlap(a, c, Vec3(0, 0, 0.25), 1.0)));
+  CHECK(std::isinf(distanceToOverlap(a, c, Vec3(0, 0, 0.25), 2.4)));   // 0.48 of reach at 2.4 times: still apart
+  CHECK(distanceToOverlap(a, c, Vec3(0, 0, 0.25), 2.6) < 0.1);         // 0.52: the inflated wood touches
+}
+
 TEST_CASE("the BVH finds the same pairs as testing every pair, on a preset's mesh", "[mesh][self-intersection]") {
   const TreeMesh tree = test::meshOf("palm", 1);
   const auto fast = findIntersectingQuads(tree.mesh);

@@ -15,6 +15,10 @@ namespace {
 // A point within this many radii of both stems' axes lies where the skeleton puts wood of both: the surface
 // sits at ~1.52 r (limit compensation); the rest allows for bands drawn as chords between rings.
 constexpr double kWoodReach = 1.75;
+// The mesh's corners sit at 1.52 r: capsules that big overlapping make crossing cages, and the crossing of
+// two branches spreads over their joints; a point within twice the two radii of such an overlap is theirs.
+constexpr double kCageReach = 1.52;
+constexpr double kOverlapNear = 2.0;
 // Fewer quads than this are checked on one thread: starting threads would cost more than it saves.
 constexpr std::size_t kThreadsFrom = 20000;
 
@@ -154,9 +158,12 @@ SelfIntersectionReport checkSelfIntersections(const TreeMesh& tree, const Skelet
       h.reachA = stemReach(capsules[static_cast<std::size_t>(h.stemA)], h.point, builtRadius(tree.mesh, h.a));
       h.reachB = stemReach(capsules[static_cast<std::size_t>(h.stemB)], h.point, builtRadius(tree.mesh, h.b));
     }
-    // Both stems' skeletons must reach the point: then the branches themselves cross there.
-    const bool wood = h.contact != QuadContact::Edge && h.relation != StemRelation::Hub &&
-                      h.relation != StemRelation::Same && h.reachA <= kWoodReach && h.reachB <= kWoodReach;
+    // Both stems' skeletons reach the point, or their wood (at the size of the mesh's corners) overlaps within
+    // two radii of it: then the branches themselves cross there, and so must their surfaces, necks and collars.
+    const bool candidate = h.contact != QuadContact::Edge && h.relation != StemRelation::Hub && h.relation != StemRelation::Same;
+    const bool wood = candidate && ((h.reachA <= kWoodReach && h.reachB <= kWoodReach) ||
+                                    distanceToOverlap(capsules[static_cast<std::size_t>(h.stemA)], capsules[static_cast<std::size_t>(h.stemB)],
+                                                      h.point, kCageReach) <= kOverlapNear);
     h.origin = wood ? PairOrigin::Skeleton : PairOrigin::Mesh;
   }
   SelfIntersectionReport r = summarise(std::move(hits), tree.mesh.quads.size(), true);

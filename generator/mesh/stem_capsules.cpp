@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include <glm/geometric.hpp>
 
@@ -31,6 +32,46 @@ double capsuleReach(const Capsule& c, const Vec3& x, double minRadius) {
 double stemReach(const std::vector<Capsule>& stem, const Vec3& x, double minRadius) {
   double best = std::numeric_limits<double>::infinity();
   for (const Capsule& c : stem) best = std::min(best, capsuleReach(c, x, minRadius));
+  return best;
+}
+
+namespace {
+
+// Parameters (s, t) in [0, 1] of the closest points of segments p0-p1 and q0-q1.
+std::pair<double, double> closestParameters(const Vec3& p0, const Vec3& p1, const Vec3& q0, const Vec3& q1) {
+  const Vec3 d1 = p1 - p0, d2 = q1 - q0, r = p0 - q0;
+  const double a = glm::dot(d1, d1), e = glm::dot(d2, d2), f = glm::dot(d2, r);
+  if (a <= 0.0 && e <= 0.0) return {0.0, 0.0};
+  if (a <= 0.0) return {0.0, std::clamp(f / e, 0.0, 1.0)};
+  const double c = glm::dot(d1, r);
+  if (e <= 0.0) return {std::clamp(-c / a, 0.0, 1.0), 0.0};
+  const double b = glm::dot(d1, d2), denom = a * e - b * b;
+  double s = denom > 0.0 ? std::clamp((b * f - c * e) / denom, 0.0, 1.0) : 0.0;
+  double t = (b * s + f) / e;
+  // Clamping t may move the best s: recompute it from the clamped t.
+  if (t < 0.0) {
+    t = 0.0;
+    s = std::clamp(-c / a, 0.0, 1.0);
+  } else if (t > 1.0) {
+    t = 1.0;
+    s = std::clamp((b - c) / a, 0.0, 1.0);
+  }
+  return {s, t};
+}
+
+}  // namespace
+
+double distanceToOverlap(const std::vector<Capsule>& a, const std::vector<Capsule>& b, const Vec3& x, double inflate) {
+  double best = std::numeric_limits<double>::infinity();
+  for (const Capsule& ca : a) {
+    for (const Capsule& cb : b) {
+      const auto [s, t] = closestParameters(ca.a, ca.b, cb.a, cb.b);
+      const Vec3 pa = ca.a + (ca.b - ca.a) * s, pb = cb.a + (cb.b - cb.a) * t;
+      const double reach = inflate * (ca.ra + (ca.rb - ca.ra) * s + cb.ra + (cb.rb - cb.ra) * t);
+      if (reach <= 0.0 || glm::distance(pa, pb) >= reach) continue;
+      best = std::min(best, glm::distance(x, 0.5 * (pa + pb)) / reach);
+    }
+  }
   return best;
 }
 
