@@ -245,8 +245,9 @@ class Builder {
     const Vec3 preferred = start.top ? directionOr(normal + d, normal)
                                      : (glm::dot(d, normal) > 0.2 ? glm::normalize(2.0 * normal + d) : normal);
     // A port is as wide as the parent; the neck narrows to at most half of it (a branch collar), so that
-    // its quads stay convex, and the child's own radius is reached at the next cross section.
-    const double exitRadius = std::max(rc, 0.5 * portRadius / opt_.limitCompensation);
+    // its quads stay convex, and the child's own radius is reached at the next cross section. A twig's collar
+    // stays within twice its radius: wider, the collars of neighbouring twigs cut each other (the willow's).
+    const double exitRadius = std::max(rc, std::min(0.5 * portRadius / opt_.limitCompensation, 2.0 * rc));
     const double e0 = std::max(2.0 * exitRadius * opt_.limitCompensation, 0.35 * portRadius);
     const std::array<Vec3, 4> portCorners{position(q[0]), position(q[1]), position(q[2]), position(q[3])};
     if (!start.top) {
@@ -434,7 +435,7 @@ class Builder {
     }
     if (!slabs.empty()) {
       Slab& end = slabs.back();  // ends before the tip (or the split), however close to it its child attaches
-      end.hi = std::min(end.hi, to);
+      end.hi = std::min(end.hi, to - 0.2 * (to - end.last));  // never at it: that band would have no length
       if (end.hi <= end.last) end.hi = end.last + 0.5 * (to - end.last);
     }
     for (std::size_t j = 1; j < slabs.size(); ++j) {

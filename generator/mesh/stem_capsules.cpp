@@ -93,7 +93,8 @@ std::vector<std::vector<Capsule>> stemCapsules(const Skeleton& skeleton) {
     const SkeletonNode& attach = nodes[static_cast<std::size_t>(stem.attachNode)];
     const Vec3 from = attach.world.direction(), to = glm::normalize(out.front().b - out.front().a);
     const double sine = std::max(kMinSine, glm::length(glm::cross(from, to)));
-    double cut = kSurfaceReach * (attach.radius + out.front().ra) / sine;
+    // A clone's source ends at the split: only the source's rounded end lies ahead of it, not a whole parent.
+    double cut = stem.cloneOf >= 0 ? attach.radius : kSurfaceReach * (attach.radius + out.front().ra) / sine;
     std::size_t drop = 0;
     for (; drop < out.size(); ++drop) {
       Capsule& c = out[drop];
