@@ -157,7 +157,9 @@ TEST_CASE("measure: where the mesh-made crossings are", "[.measure-cross]") {
         const SkeletonStem& st = s.stems[static_cast<std::size_t>(stem)];
         return "stem " + std::to_string(stem) + " L" + std::to_string(st.level) + " parent " + std::to_string(st.parentStem) + " at " + std::to_string(st.offsetOnParent);
       };
-      std::printf("   %u (%s) x %u (%s) at (%.3f %.3f %.3f)\n", h.a, info(h.stemA).c_str(), h.b, info(h.stemB).c_str(), h.point.x, h.point.y, h.point.z);
+      const auto dirOf = [&](int stem) { const SkeletonStem& st = s.stems[static_cast<std::size_t>(stem)]; return glm::normalize(s.nodes[static_cast<std::size_t>(st.firstNode)].world.position - s.nodes[static_cast<std::size_t>(st.attachNode)].world.position); };
+      const double angle = std::acos(std::clamp(glm::dot(dirOf(h.stemA), dirOf(h.stemB)), -1.0, 1.0)) * 57.3;
+      std::printf("   %u (%s) x %u (%s) at (%.3f %.3f %.3f) angle %.0f\n", h.a, info(h.stemA).c_str(), h.b, info(h.stemB).c_str(), h.point.x, h.point.y, h.point.z, angle);
     }
   }
   for (const auto& [k, n] : hist) std::printf("%6d  %s\n", n, k.c_str());

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # XML -> OBJ process wall time, Arbaro 1.9.9 against Arbor, for every Arbaro species file (same file, same
-# seed, one run each, same machine). Arbaro is not packaged: build it from its public source (wdiestel/arbaro)
+# seed, same machine; each the best of RUNS runs, taken in turn, since a shared machine's speed wanders). Arbaro is not packaged: build it from its public source (wdiestel/arbaro)
 # with javac and point ARBARO_CLASSES at the classes folder.
-# Usage: ARBARO_CLASSES=/path/to/classes tools/arbaro_speed.sh [SPECIES_DIR] [SEED]
+# Usage: ARBARO_CLASSES=/path/to/classes [RUNS=3] tools/arbaro_speed.sh [SPECIES_DIR] [SEED]
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 species="${1:-$root/../shared/arbaro-species}"
@@ -13,12 +13,18 @@ command -v java >/dev/null || { echo "java is missing (apt-get install default-j
 [ -x "$arbor" ] || { echo "$arbor is missing: run tools/build.sh first" >&2; exit 2; }
 out="$(mktemp -d)"
 trap 'rm -rf "$out"' EXIT
+least() { awk -v x="$1" -v y="$2" 'BEGIN { print (x < y) ? x : y }'; }
 seconds() { local t0 t1; t0=$(date +%s.%N); "$@" >/dev/null 2>&1; t1=$(date +%s.%N); echo "$t1 - $t0" | bc -l; }
 printf '| file | Arbaro s | Arbor s | Arbaro / Arbor | Arbaro OBJ MB | Arbor OBJ MB |\n|---|---|---|---|---|---|\n'
 for xml in "$species"/*.xml; do
   name="$(basename "$xml" .xml)"
-  a=$(seconds java -cp "$ARBARO_CLASSES" net.sourceforge.arbaro.arbaro -q -s "$seed" -f OBJ -o "$out/$name-arbaro.obj" "$xml")
-  b=$(seconds "$arbor" generate "$xml" --seed "$seed" --out "$out/$name-arbor.obj" --quiet)
+  a=1e9; b=1e9
+  for _ in $(seq "${RUNS:-3}"); do
+    t=$(seconds java -cp "$ARBARO_CLASSES" net.sourceforge.arbaro.arbaro -q -s "$seed" -f OBJ -o "$out/$name-arbaro.obj" "$xml")
+    a=$(least "$t" "$a")
+    t=$(seconds "$arbor" generate "$xml" --seed "$seed" --out "$out/$name-arbor.obj" --quiet)
+    b=$(least "$t" "$b")
+  done
   printf '| %s | %.2f | %.3f | %.1f | %.1f | %.1f |\n' "$name" "$a" "$b" "$(echo "$a / $b" | bc -l)" \
     "$(echo "$(stat -c %s "$out/$name-arbaro.obj") / 1048576" | bc -l)" "$(echo "$(stat -c %s "$out/$name-arbor.obj") / 1048576" | bc -l)"
 done

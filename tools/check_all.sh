@@ -4,7 +4,7 @@
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 species="${1:-$root/../shared/arbaro-species}"
-arbor="$root/build/tools/arbor"
+arbor="${ARBOR:-$root/build/tools/arbor}"  # ARBOR: another build to compare
 [ -x "$arbor" ] || { echo "$arbor is missing: run tools/build.sh first" >&2; exit 2; }
 json="$(mktemp)"
 trap 'rm -f "$json"' EXIT
