@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <future>
 #include <memory>
 
 #include "assets.hpp"
@@ -90,6 +91,15 @@ int runGenerate(const GenerateOptions& o) {
   const QuadMesh& exported = o.subdivide > 0 ? subdivided : tree.mesh;
   if (type == OutputType::Gltf) content = writeGltf(exported, params.name);
   if (type == OutputType::Glb) content = writeGlb(exported, params.name);
+  // The summary's topology and patch counts are worked out on another core while the file is written.
+  struct MeshSummary {
+    MeshTopologyReport topology;
+    PatchSet patches;
+  };
+  std::future<MeshSummary> summary;
+  if (!o.quiet && type != OutputType::Skeleton) {
+    summary = std::async(std::launch::async, [&tree] { return MeshSummary{checkTopology(tree.mesh), buildPatches(tree.mesh)}; });
+  }
   if (type == OutputType::Skeleton) writeFileAtomically(o.out, [&](std::ostream& out) { writeSkeletonJson(skeleton, out); });
   else if (type == OutputType::Obj) writeFileAtomically(o.out, [&](std::ostream& out) { writeObj(exported, o.triangles, out); });
   else writeFileAtomically(o.out, content);
@@ -112,8 +122,9 @@ int runGenerate(const GenerateOptions& o) {
   std::printf("  r^E conservation worst relative error %.1e (E = %.2f)\n", worstConservationError(skeleton),
               skeleton.exponent);
   if (type != OutputType::Skeleton) {
-    const MeshTopologyReport topology = checkTopology(tree.mesh);
-    const PatchSet patches = buildPatches(tree.mesh);
+    const MeshSummary counted = summary.get();
+    const MeshTopologyReport& topology = counted.topology;
+    const PatchSet& patches = counted.patches;
     std::size_t regular = 0, fallback = 0;
     for (PatchKind k : patches.kind) {
       regular += k == PatchKind::Regular ? 1 : 0;
