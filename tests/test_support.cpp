@@ -1,5 +1,6 @@
 #include "test_support.hpp"
 
+#include <catch2/catch.hpp>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -78,7 +79,10 @@ std::string tempPath(const std::string& name) {
 std::vector<std::string> arbaroSpeciesFiles(const std::string& dir) {
   std::vector<std::string> files;
   std::error_code ec;
-  if (!fs::is_directory(dir, ec)) return files;
+  if (!fs::is_directory(dir, ec)) {
+    WARN("Arbaro's species files are not beside this checkout (" << dir << "); skipped");
+    return files;
+  }
   for (const auto& e : fs::directory_iterator(dir)) {
     if (e.path().extension() == ".xml") files.push_back(e.path().string());
   }

@@ -18,8 +18,8 @@ double angleBetween(const Vec3& a, const Vec3& b);  // radians
 
 std::string tempPath(const std::string& name);  // in a per-run scratch directory
 
-// The Arbaro species files (*.xml) in `dir`, sorted; empty when the folder is not there (a checkout without
-// ../shared: the callers skip and say so).
+// The Arbaro species files (*.xml) in `dir`, sorted; empty, with a warning in the test's report, when the
+// folder is not there (a checkout without ../shared: the callers skip).
 std::vector<std::string> arbaroSpeciesFiles(const std::string& dir);
 
 // A shell command's exit status and what it printed (add 2>&1 to the command for stderr too).
