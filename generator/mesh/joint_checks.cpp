@@ -12,20 +12,19 @@ namespace {
 // First and last ring of every stem, in build order (a stem's rings are in order along it).
 struct StemRings {
   std::vector<int> first, last;
-  std::vector<double> tubeStart;  // arc length of the first ring on the stem's own skeleton
-  std::vector<std::vector<std::pair<double, double>>> onSkeleton;  // (arc length, radius) of those rings
+  // (arc length, radius) of the rings on the stem's own skeleton, by arc length: the first is where its tube begins.
+  std::vector<std::vector<std::pair<double, double>>> onSkeleton;
 };
 
 StemRings stemRings(const Skeleton& skeleton, const TreeMesh& tree) {
   StemRings r{std::vector<int>(skeleton.stems.size(), -1), std::vector<int>(skeleton.stems.size(), -1),
-              std::vector<double>(skeleton.stems.size(), -1.0), std::vector<std::vector<std::pair<double, double>>>(skeleton.stems.size())};
+              std::vector<std::vector<std::pair<double, double>>>(skeleton.stems.size())};
   for (std::size_t i = 0; i < tree.rings.size(); ++i) {
     const int stem = tree.rings[i].stem;
     if (stem < 0) continue;
     const auto s = static_cast<std::size_t>(stem);
     if (r.first[s] < 0) r.first[s] = static_cast<int>(i);
     r.last[s] = static_cast<int>(i);
-    if (r.tubeStart[s] < 0.0 && tree.rings[i].arc >= 0.0) r.tubeStart[s] = tree.rings[i].arc;
     if (tree.rings[i].arc >= 0.0) r.onSkeleton[s].emplace_back(tree.rings[i].arc, tree.rings[i].radius);
   }
   for (auto& arcs : r.onSkeleton) std::sort(arcs.begin(), arcs.end());
@@ -57,7 +56,7 @@ std::vector<ChildPlacement> childPlacements(const Skeleton& skeleton, const Tree
     if (above != arcs.begin()) ra = std::max(ra, std::prev(above)->second);
     const Vec3 d = tree.rings[static_cast<std::size_t>(rings.first[c])].center - attach;
     out.push_back(ChildPlacement{static_cast<int>(c), st.parentStem, std::abs(glm::dot(d, parent.direction(s))) / ra, s, ra,
-                                 s < rings.tubeStart[static_cast<std::size_t>(st.parentStem)]});
+                                 !arcs.empty() && s < arcs.front().first});
   }
   return out;
 }

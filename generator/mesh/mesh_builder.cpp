@@ -430,7 +430,8 @@ class Builder {
       const double ra = std::max(poly.radius(poly.arcLength(i) - 1e-9), 1e-6 * sk_.treeScale);
       double rc = 0.0;
       for (int c : children) rc = std::max(rc, sk_.stems[static_cast<std::size_t>(c)].startRadius);
-      // The thinnest slab a child gets: a sixth of the parent's width.
+      // Half a slab's height: 1.2 child radii, within 0.3 to 1 parent radius; at the very least, hMin.
+      const double h = std::clamp(1.2 * rc, 0.3 * ra, ra);
       const double hMin = 0.15 * ra;
       const double s = to - from > 2.0 * hMin ? std::clamp(poly.arcLength(i), from + hMin, to - hMin) : from + hMin;
       const bool moved = s != poly.arcLength(i);
@@ -441,14 +442,14 @@ class Builder {
         if (s - prev.first < 2.0 * hMin) {
           prev.children.insert(prev.children.end(), children.begin(), children.end());
           prev.last = s;
-          prev.h = std::max(prev.h, std::clamp(1.2 * rc, 0.3 * ra, ra));
+          prev.h = std::max(prev.h, h);
           prev.need = std::max(prev.need, rc);
           continue;
         }
       }
-      const double h = std::clamp(1.2 * rc, 0.3 * ra, ra);
-      slabs.push_back(Slab{s - h, s + h, h, s, s, rc, node, children, moved});
+      slabs.push_back(Slab{0.0, 0.0, h, s, s, rc, node, children, moved});
     }
+    // Each slab spans its attachments and h beyond them, within [from, to]; then neighbours are fitted.
     for (Slab& slab : slabs) {
       slab.lo = std::max(slab.first - slab.h, from);
       slab.hi = slab.last + slab.h;
