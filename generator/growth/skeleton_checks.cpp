@@ -22,6 +22,7 @@ SkeletonStats skeletonStats(const Skeleton& s) {
     const auto level = static_cast<std::size_t>(st.level);
     if (stats.stemsPerLevel.size() <= level) stats.stemsPerLevel.resize(level + 1, 0);
     ++stats.stemsPerLevel[level];
+    stats.stubs += st.stub ? 1 : 0;
   }
   return stats;
 }

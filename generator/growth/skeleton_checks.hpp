@@ -9,6 +9,7 @@ namespace arbor {
 
 struct SkeletonStats {
   std::size_t nodes = 0, stems = 0, leaves = 0, branchPoints = 0;
+  std::size_t stubs = 0;        // stems too short, stubby or thin for a tube (SkeletonStem::stub)
   std::vector<std::size_t> stemsPerLevel;
   double height = 0;            // highest node above the ground
   double lowest = 0;            // lowest node (negative: below the ground)

@@ -1,5 +1,4 @@
 // arbor generate: species parameters in, a tree out (skeleton JSON now; meshes with the mesh stage).
-#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <future>
@@ -115,8 +114,7 @@ int runGenerate(const GenerateOptions& o) {
   std::printf("  stems per level  %s\n", perLevel.c_str());
   std::printf("  nodes            %zu (%zu branch points)\n", stats.nodes, stats.branchPoints);
   std::printf("  leaves           %zu\n", stats.leaves);
-  const auto stubs = std::count_if(skeleton.stems.begin(), skeleton.stems.end(), [](const SkeletonStem& st) { return st.stub; });
-  if (stubs > 0) std::printf("  stubs            %td (too short, stubby or thin for a tube: fake branches, not in the mesh)\n", stubs);
+  if (stats.stubs > 0) std::printf("  stubs            %zu (too short, stubby or thin for a tube: fake branches, not in the mesh)\n", stats.stubs);
   std::printf("  height           %.2f m, crown radius %.2f m, trunk base radius %.3f m\n", stats.height,
               stats.crownRadius, skeleton.nodes.empty() ? 0.0 : skeleton.nodes.front().radius);
   std::printf("  r^E conservation worst relative error %.1e (E = %.2f)\n", worstConservationError(skeleton),
