@@ -78,19 +78,20 @@ TEST_CASE("every preset meshes to one closed, outward, manifold piece at several
 
 TEST_CASE("the mesher's own crossings stay at or below what was measured for every preset", "[mesh][self-intersection]") {
   // Issue 13's floor is no mesh-made pair at all; it is not met yet (docs/mesh.md, "Known limits"). These are
-  // the counts of 2026-12-02 (seed 1) plus a tenth: a change to the mesher that makes more fails here.
+  // the counts of 2026-12-02 (seed 1, a collar counted as its parent's surface) plus a tenth: a change to the
+  // mesher that makes more fails here.
   struct Measured {
     const char* preset;
     std::size_t meshMade, folds, necks;
   };
-  for (const Measured& m : {Measured{"black-tupelo", 403, 0, 0}, Measured{"ca-black-oak", 162, 0, 43},
-                            Measured{"lombardy-poplar", 240, 0, 2}, Measured{"palm", 244, 0, 0},
-                            Measured{"quaking-aspen", 71, 2, 4}, Measured{"weeping-willow", 610, 16, 22}}) {
+  for (const Measured& m : {Measured{"black-tupelo", 120, 0, 0}, Measured{"ca-black-oak", 91, 0, 43},
+                            Measured{"lombardy-poplar", 140, 0, 2}, Measured{"palm", 244, 0, 0},
+                            Measured{"quaking-aspen", 2, 2, 4}, Measured{"weeping-willow", 453, 16, 22}}) {
     INFO(m.preset);
     const Skeleton s = grow(test::loadPreset(m.preset), 1);
     const SelfIntersectionReport r = checkSelfIntersections(buildTreeMesh(s), s);
     CHECK(r.skeletonMade > 0);  // Weber-Penn's branches do cross: the check sees them and tells them apart
-    CHECK(r.meshMade * 10 <= m.meshMade * 11);
+    CHECK(r.meshMade * 10 <= m.meshMade * 11 + 5);
     CHECK(r.folds * 10 <= m.folds * 11 + 5);
     CHECK(r.neckCrossings * 10 <= m.necks * 11 + 5);
   }

@@ -172,6 +172,57 @@ TEST_CASE("two stems whose skeleton capsules cross make a skeleton-made pair; a 
   CHECK(report.hits[0].relation == StemRelation::Same);
 }
 
+TEST_CASE("a stem crossing a branch's wood where the branch's child has its collar is skeleton-made", "[mesh][self-intersection]") {
+  const double r = 0.05;
+  Skeleton skeleton = crossingSkeleton(r);
+  // Stem 2, a twig of radius 0.01 on stem 0, rising at x = 0.15: its collar lies on stem 0's upper surface.
+  SkeletonNode base, tip;
+  base.stem = tip.stem = 2;
+  base.kind = NodeKind::Base;
+  tip.kind = NodeKind::Tip;
+  base.world.position = Vec3(0.15, 0, r);
+  tip.world.position = Vec3(0.15, 0, 1);
+  base.radius = tip.radius = tip.startRadius = 0.01;
+  base.parent = -1;  // the twig's wood starts at its own base, not back at stem 0's node
+  tip.parent = 4;
+  SkeletonStem twig;
+  twig.firstNode = 4;
+  twig.nodeCount = 2;
+  twig.level = 1;
+  twig.parentStem = 0;
+  twig.attachNode = 0;
+  skeleton.nodes.push_back(base);
+  skeleton.nodes.push_back(tip);
+  skeleton.stems.push_back(twig);
+  skeleton.nodes[0].world.rotation = glm::angleAxis(radians(90.0), Vec3(0, 1, 0));  // stem 0 leaves along +x
+  TreeMesh tree;
+  QuadSoup s;
+  s.quad(Vec3(-0.1, -r, r), Vec3(0.1, -r, r), Vec3(0.1, r, r), Vec3(-0.1, r, r));      // the twig's collar
+  s.quad(Vec3(0, -0.5, -r), Vec3(0, 0.5, -r), Vec3(0, 0.5, 2 * r), Vec3(0, -0.5, 2 * r));  // stem 1 through stem 0
+  tree.mesh = s.mesh;
+  tree.quadStem = {2, 1};
+  SelfIntersectionReport report = checkSelfIntersections(tree, skeleton);
+  REQUIRE(report.pairs == 1);
+  CHECK(report.hits[0].reachA > 10.0);  // far from the twig's own axis: its wood does not explain it
+  CHECK(report.skeletonMade == 1);      // stem 1 crosses stem 0 there, and the collar stands for stem 0's surface
+
+  // Stem 1 a sibling of the twig (also grown from stem 0): it crosses stem 0 by construction, so the pair is
+  // the mesher's.
+  skeleton.stems[1].parentStem = 0;
+  skeleton.stems[1].attachNode = 1;
+  report = checkSelfIntersections(tree, skeleton);
+  REQUIRE(report.pairs == 1);
+  CHECK(report.meshMade == 1);
+
+  // Stem 1 moved away from stem 0: nothing crosses there in the skeleton.
+  skeleton.stems[1].parentStem = -1;
+  skeleton.stems[1].attachNode = -1;
+  for (SkeletonNode& n : skeleton.nodes)
+    if (n.stem == 1) n.world.position += Vec3(0, 0, 10);
+  report = checkSelfIntersections(tree, skeleton);
+  CHECK(report.meshMade == 1);
+}
+
 TEST_CASE("a child's capsules start where its axis leaves its parent's wood", "[mesh][self-intersection]") {
   Skeleton s = crossingSkeleton(0.1);
   // Stem 1 grows from stem 0's base node, at right angles: cut at 1.6 (0.1 + 0.1) = 0.32 along it.

@@ -4,6 +4,7 @@
 #include <atomic>
 #include <chrono>
 #include <thread>
+#include <tuple>
 
 #include "quad_bvh.hpp"
 #include "stem_capsules.hpp"
@@ -75,6 +76,24 @@ StemRelation relationOf(const Skeleton& skeleton, int a, int b) {
   if ((sa.parentStem == b && sa.cloneOf < 0) || (sb.parentStem == a && sb.cloneOf < 0)) return StemRelation::ParentChild;
   if (sa.attachNode >= 0 && sa.attachNode == sb.attachNode) return StemRelation::Siblings;
   return StemRelation::Other;
+}
+
+// Both stems' skeletons reach the point, or their wood (at the size of the mesh's corners) overlaps within two
+// radii of it: then the branches themselves cross there, and so must their surfaces, necks and collars.
+bool woodMeets(const std::vector<std::vector<Capsule>>& capsules, int a, int b, const Vec3& point, double reachA, double reachB) {
+  return (reachA <= kWoodReach && reachB <= kWoodReach) ||
+         distanceToOverlap(capsules[static_cast<std::size_t>(a)], capsules[static_cast<std::size_t>(b)], point, kCageReach) <= kOverlapNear;
+}
+
+// The stem whose surface a stem's collar stands in for: its parent (a clone's collar is its source's end).
+int collarParent(const Skeleton& skeleton, int stem) {
+  const SkeletonStem& s = skeleton.stems[static_cast<std::size_t>(stem)];
+  return s.cloneOf >= 0 ? s.cloneOf : s.parentStem;
+}
+
+// x crossing the collar of a child of p is x crossing p only if x is not p, nor p's child or clone.
+bool unrelatedTo(const Skeleton& skeleton, int x, int p) {
+  return x != p && relationOf(skeleton, x, p) == StemRelation::Other && collarParent(skeleton, x) != p;
 }
 
 SelfIntersectionReport summarise(std::vector<QuadPairHit> hits, std::size_t quads, bool classified) {
@@ -158,12 +177,17 @@ SelfIntersectionReport checkSelfIntersections(const TreeMesh& tree, const Skelet
       h.reachA = stemReach(capsules[static_cast<std::size_t>(h.stemA)], h.point, builtRadius(tree.mesh, h.a));
       h.reachB = stemReach(capsules[static_cast<std::size_t>(h.stemB)], h.point, builtRadius(tree.mesh, h.b));
     }
-    // Both stems' skeletons reach the point, or their wood (at the size of the mesh's corners) overlaps within
-    // two radii of it: then the branches themselves cross there, and so must their surfaces, necks and collars.
     const bool candidate = h.contact != QuadContact::Edge && h.relation != StemRelation::Hub && h.relation != StemRelation::Same;
-    const bool wood = candidate && ((h.reachA <= kWoodReach && h.reachB <= kWoodReach) ||
-                                    distanceToOverlap(capsules[static_cast<std::size_t>(h.stemA)], capsules[static_cast<std::size_t>(h.stemB)],
-                                                      h.point, kCageReach) <= kOverlapNear);
+    bool wood = candidate && woodMeets(capsules, h.stemA, h.stemB, h.point, h.reachA, h.reachB);
+    // A child's collar lies on its parent's surface: a stem crossing that parent's wood crosses the collar too.
+    if (candidate && !wood) {
+      for (const auto& [x, y, reachX] : {std::tuple{h.stemA, h.stemB, h.reachA}, std::tuple{h.stemB, h.stemA, h.reachB}}) {
+        const int py = collarParent(skeleton, y);
+        if (py < 0 || unrelatedTo(skeleton, x, py) == false) continue;
+        const double reachP = stemReach(capsules[static_cast<std::size_t>(py)], h.point);
+        if (woodMeets(capsules, x, py, h.point, reachX, reachP)) wood = true;
+      }
+    }
     h.origin = wood ? PairOrigin::Skeleton : PairOrigin::Mesh;
   }
   SelfIntersectionReport r = summarise(std::move(hits), tree.mesh.quads.size(), true);

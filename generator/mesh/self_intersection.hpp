@@ -51,7 +51,8 @@ SelfIntersectionReport checkSelfIntersections(const QuadMesh& mesh);
 
 // A tree's mesh with its skeleton: each pair classified, skeleton-made when the point lies within both
 // stems' capsules (past where each leaves the stem it grows from; radii at least those the quads were built
-// for), mesh-made otherwise; folds and pairs within one stem are always mesh-made.
+// for), or, a child's collar standing for its parent's surface, when the other stem crosses that parent there;
+// mesh-made otherwise; folds and pairs within one stem are always mesh-made.
 SelfIntersectionReport checkSelfIntersections(const TreeMesh& tree, const Skeleton& skeleton);
 
 // The number the mesher must bring to 0: pairs of quads that intersect where the skeleton does not.
