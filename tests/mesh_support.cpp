@@ -1,6 +1,6 @@
 #include "mesh_support.hpp"
 
-#include "growth/weber_penn.hpp"
+#include "growth/weber_penn/weber_penn.hpp"
 #include "test_support.hpp"
 
 namespace arbor::test {

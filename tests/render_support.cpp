@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <sstream>
 
-#include "growth/weber_penn.hpp"
+#include "growth/weber_penn/weber_penn_model.hpp"
 #include "image/image_compare.hpp"
 #include "test_support.hpp"
 
@@ -44,20 +44,19 @@ const render::TreeTextures& textures() {
 namespace {
 
 Skeleton grownFor(const std::string& preset, int meshLevels, int impostorLevels) {
-  const SpeciesParams params = loadPreset(preset);
+  const TreeModel model = weberPennModel(loadPreset(preset));
   GrowthOptions growth;
-  growth.levels = (meshLevels > 0 ? meshLevels : params.levels) + impostorLevels;
-  return generateSkeleton(params, growth);
+  growth.levels = (meshLevels > 0 ? meshLevels : model.levels()) + impostorLevels;
+  return model.grow(growth);
 }
 
 }  // namespace
 
 TreeScene::TreeScene(const std::string& preset, int meshLevels, int impostorLevels, std::uint32_t width, std::uint32_t height)
     : skeleton(grownFor(preset, meshLevels, impostorLevels)),
-      faked(meshWithFakeBranches(skeleton, skeleton.levels - impostorLevels)),
-      patches(buildPatches(faked.tree.mesh)),
+      faked(buildTree(skeleton, BuildOptions{MeshOptions{.levels = skeleton.levels - impostorLevels}, true})),
       session(vulkan(), width, height, VK_SAMPLE_COUNT_1_BIT, textures()) {
-  session.setTree(faked.tree.mesh, patches, skeleton.leaves, faked.impostors);
+  session.setTree(faked.mesh.mesh, faked.patches, skeleton.leaves, faked.impostors);
 }
 
 render::Camera TreeScene::framed() const {

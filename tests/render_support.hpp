@@ -4,9 +4,7 @@
 
 #include "growth/skeleton.hpp"
 #include "image/png_io.hpp"
-#include "mesh/impostor_segments.hpp"
-#include "mesh/tree_mesh.hpp"
-#include "patches/patch_set.hpp"
+#include "tree/build_tree.hpp"
 #include "render/render_session.hpp"
 #include "vk/context.hpp"
 
@@ -18,8 +16,7 @@ const render::TreeTextures& textures();
 // A preset grown, meshed and uploaded with its leaves and fake branches into its own offscreen session.
 struct TreeScene {
   Skeleton skeleton;
-  FakedTree faked;  // the mesh of the meshed levels, the others as fake-branch segments
-  PatchSet patches;
+  TreeGeometry faked;  // the mesh of the meshed levels and its patches, the others as fake-branch segments
   render::RenderSession session;
 
   // meshLevels 0: the species' Levels; impostorLevels more are grown and drawn as fake branches.

@@ -11,7 +11,7 @@
 #include <opensubdiv/bfr/surface.h>
 #include <opensubdiv/far/primvarRefiner.h>
 
-#include "growth/weber_penn.hpp"
+#include "growth/weber_penn/weber_penn.hpp"
 #include "mesh/osd_topology.hpp"
 #include "mesh/tree_mesh.hpp"
 #include "patches/acc.hpp"

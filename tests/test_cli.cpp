@@ -63,6 +63,19 @@ TEST_CASE("bad species files exit with 2, name file and field, and leave the out
   CHECK_FALSE(fs::exists(arbor::test::tempPath("x.json")));
 }
 
+TEST_CASE("species --list names the growth models and each preset's model; a file naming no known model exits 2", "[cli]") {
+  const Result list = run("species --list");
+  CHECK(list.exitCode == 0);
+  CHECK_THAT(list.output, Catch::Contains("growth models:") && Catch::Contains("weber-penn") && Catch::Contains("presets in"));
+  CHECK_THAT(list.output, Catch::Matches("(.|\n)*black-tupelo +weber-penn +Black Tupelo(.|\n)*"));
+
+  const std::string other = writeTemp("other-model.json", "{\"model\": \"space-colonization\", \"Name\": \"x\"}");
+  const Result r = run("generate " + other + " --out " + arbor::test::tempPath("o.json"));
+  CHECK(r.exitCode == 2);
+  CHECK_THAT(r.output, Catch::Contains("other-model.json") && Catch::Contains("model") && Catch::Contains("allowed: \"weber-penn\""));
+  CHECK_FALSE(fs::exists(arbor::test::tempPath("o.json")));
+}
+
 TEST_CASE("unknown presets list the presets on offer", "[cli]") {
   const Result r = run("generate no-such-tree --out " + arbor::test::tempPath("n.json"));
   CHECK(r.exitCode == 2);

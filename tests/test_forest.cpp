@@ -3,7 +3,9 @@
 #include <catch2/catch.hpp>
 
 #include "image/image_compare.hpp"
+#include "growth/weber_penn/weber_penn_model.hpp"
 #include "render/forest.hpp"
+#include "render/renderer.hpp"
 #include "render_support.hpp"
 #include "test_support.hpp"
 
@@ -28,14 +30,35 @@ TEST_CASE("trees are placed without overlapping crowns, the same for the same se
   CHECK(render::placeTrees(radii, 200, 8, again)[1].position != placed[1].position);
 }
 
+namespace {
+
+ForestTreesOptions forestOf(const std::vector<std::string>& presets, std::uint32_t trees, std::uint32_t seeds, int maxLevels = 8) {
+  ForestTreesOptions o;
+  o.labels = presets;
+  for (const std::string& name : presets) {
+    SpeciesParams p = test::loadPreset(name);
+    p.levels = std::min(p.levels, maxLevels);
+    o.models.push_back(weberPennModel(p));
+  }
+  o.trees = trees;
+  o.seeds = seeds;
+  o.details = static_cast<int>(render::kDetailLevels);
+  o.maxDistinct = render::TreeRenderer::kMaxTrees / render::kDetailLevels;
+  return o;
+}
+
+render::Forest plant(const ForestTreesOptions& o, std::vector<std::string>* progress = nullptr) {
+  const auto trees = growForestTrees(o, [&](const std::string& line) {
+    if (progress) progress->push_back(line);
+  });
+  return render::Forest(test::vulkan(), trees, o.trees, o.seed);
+}
+
+}  // namespace
+
 TEST_CASE("a forest instances its distinct trees, culls whole trees and fakes more levels the farther a tree is", "[forest][render]") {
-  render::ForestOptions options;
-  options.species = {"palm"};
-  options.params = {test::loadPreset("palm")};
-  options.trees = 30;
-  options.seeds = 2;
   std::vector<std::string> progress;
-  const render::Forest forest(test::vulkan(), options, [&](const std::string& line) { progress.push_back(line); });
+  const render::Forest forest = plant(forestOf({"palm"}, 30, 2), &progress);
   REQUIRE(forest.trees().size() == 2);  // two seeds of one species, grown once each
   CHECK(progress.size() == 2);
   CHECK(forest.placements().size() == 30);
@@ -77,14 +100,8 @@ TEST_CASE("a forest instances its distinct trees, culls whole trees and fakes mo
 }
 
 TEST_CASE("golden image: a small mixed forest from the viewer's overview, each tree at its detail", "[forest][render][golden]") {
-  render::ForestOptions options;
-  options.species = {"palm", "quaking-aspen"};
-  options.params = {test::loadPreset("palm"), test::loadPreset("quaking-aspen")};
-  for (SpeciesParams& p : options.params) p.levels = std::min(p.levels, 2);  // light enough for the suite
-  options.trees = 8;
-  options.seeds = 1;
   render::RenderSession session(test::vulkan(), 200, 120, VK_SAMPLE_COUNT_1_BIT, test::textures());
-  const render::Forest forest(test::vulkan(), options, [](const std::string&) {});
+  const render::Forest forest = plant(forestOf({"palm", "quaking-aspen"}, 8, 1, 2));  // two levels: light enough for the suite
   session.renderer().setTrees(forest.gpuTrees());
   const render::Camera camera = forest.overview(200.0f / 120.0f);
   // The nearest trees whole, the middle ones with a level faked, the farthest with two.
@@ -103,14 +120,9 @@ TEST_CASE("golden image: a small mixed forest from the viewer's overview, each t
 }
 
 TEST_CASE("a far tree drawn without the tessellator looks as ACC at factor 1, with fewer fake branches", "[forest][render]") {
-  render::ForestOptions options;
-  options.species = {"black-tupelo"};
-  options.params = {test::loadPreset("black-tupelo")};
-  options.params[0].levels = 3;  // light enough for the suite; detail 2 meshes the trunk and fakes two levels
-  options.trees = 1;
-  options.seeds = 1;
   render::RenderSession session(test::vulkan(), 160, 160, VK_SAMPLE_COUNT_1_BIT, test::textures());
-  const render::Forest forest(test::vulkan(), options, [](const std::string&) {});
+  // Three levels: light enough for the suite; detail 2 meshes the trunk and fakes two levels.
+  const render::Forest forest = plant(forestOf({"black-tupelo"}, 1, 1, 3));
   session.renderer().setTrees(forest.gpuTrees());
   const render::Camera camera = forest.overview(1.0f);
   render::ForestFrame frame = forest.frame(camera, 1.0f, {0.0f, 0.0f, 1e6f});  // two levels faked, not far
@@ -135,14 +147,10 @@ TEST_CASE("a far tree drawn without the tessellator looks as ACC at factor 1, wi
 }
 
 TEST_CASE("a forest whose distinct trees would pass its quad limit is refused before anything is grown", "[forest]") {
-  render::ForestOptions options;
-  options.species = {"black-tupelo"};
-  options.params = {test::loadPreset("black-tupelo")};
-  options.trees = 10;
-  options.seeds = 4;
+  ForestTreesOptions options = forestOf({"black-tupelo"}, 10, 4);
   options.maxQuads = 200'000;  // four tupelos of about 140,000 quads each, at three details
   std::vector<std::string> progress;
-  CHECK_THROWS_WITH(render::Forest(test::vulkan(), options, [&](const std::string& line) { progress.push_back(line); }),
+  CHECK_THROWS_WITH(growForestTrees(options, [&](const std::string& line) { progress.push_back(line); }),
                     Catch::Contains("4 distinct trees") && Catch::Contains("fewer species or --seeds"));
   CHECK(progress.empty());  // refused from the estimates: nothing was grown
 }

@@ -4,10 +4,10 @@
 #include <algorithm>
 #include <cstdio>
 
-#include "growth/weber_penn.hpp"
+#include "growth/weber_penn/weber_penn.hpp"
 #include "mesh/joint_checks.hpp"
 #include "mesh/tree_mesh.hpp"
-#include "species/species_io.hpp"
+#include "growth/weber_penn/species_io.hpp"
 #include "test_support.hpp"
 
 using namespace arbor;

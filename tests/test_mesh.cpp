@@ -6,14 +6,14 @@
 #include <map>
 
 #include "common/input_error.hpp"
-#include "growth/weber_penn.hpp"
+#include "growth/weber_penn/weber_penn.hpp"
 #include "mesh/cross_section.hpp"
 #include "mesh/impostor_segments.hpp"
 #include "mesh/mesh_checks.hpp"
 #include "mesh/self_intersection.hpp"
 #include "mesh/tree_mesh.hpp"
 #include "patches/limit_reference.hpp"
-#include "species/species_io.hpp"
+#include "growth/weber_penn/species_io.hpp"
 #include "test_support.hpp"
 
 using namespace arbor;

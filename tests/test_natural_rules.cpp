@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "growth/math.hpp"
-#include "growth/natural_rules.hpp"
+#include "growth/weber_penn/natural_rules.hpp"
 
 using namespace arbor;
 using namespace arbor::natural;

@@ -3,7 +3,7 @@
 #include <catch2/catch.hpp>
 #include <algorithm>
 
-#include "growth/weber_penn.hpp"
+#include "growth/weber_penn/weber_penn.hpp"
 #include "mesh/osd_topology.hpp"
 #include "mesh/tree_mesh.hpp"
 #include "patches/limit_reference.hpp"

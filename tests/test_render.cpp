@@ -7,7 +7,7 @@
 #include <cmath>
 #include <map>
 
-#include "growth/weber_penn.hpp"
+#include "growth/weber_penn/weber_penn.hpp"
 #include "image/image_compare.hpp"
 #include "mesh/tree_mesh.hpp"
 #include "mesh_support.hpp"

@@ -4,11 +4,11 @@
 #include <chrono>
 #include <cstdio>
 
-#include "growth/weber_penn.hpp"
+#include "growth/weber_penn/weber_penn.hpp"
 #include "mesh/self_intersection.hpp"
 #include "mesh/stem_capsules.hpp"
 #include "mesh_support.hpp"
-#include "species/species_io.hpp"
+#include "growth/weber_penn/species_io.hpp"
 #include "test_support.hpp"
 
 using namespace arbor;

@@ -7,12 +7,12 @@
 #include <nlohmann/json.hpp>
 
 #include "common/atomic_file.hpp"
-#include "growth/natural_rules.hpp"
+#include "growth/weber_penn/natural_rules.hpp"
 #include "growth/skeleton_checks.hpp"
 #include "growth/skeleton_json.hpp"
-#include "growth/weber_penn.hpp"
-#include "growth/weber_penn_rules.hpp"
-#include "species/species_io.hpp"
+#include "growth/weber_penn/weber_penn.hpp"
+#include "growth/weber_penn/weber_penn_rules.hpp"
+#include "growth/weber_penn/species_io.hpp"
 #include "test_support.hpp"
 
 using namespace arbor;

@@ -5,7 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "common/atomic_file.hpp"
-#include "species/species_io.hpp"
+#include "growth/weber_penn/species_io.hpp"
 #include "test_support.hpp"
 
 using namespace arbor;

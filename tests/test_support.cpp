@@ -9,7 +9,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include "species/species_io.hpp"
+#include "growth/weber_penn/species_io.hpp"
 
 namespace arbor::test {
 

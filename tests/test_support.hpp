@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "growth/math.hpp"
-#include "species/species.hpp"
+#include "growth/weber_penn/species.hpp"
 
 namespace arbor::test {
 

@@ -3,8 +3,8 @@
 #include <cmath>
 #include <numbers>
 
-#include "growth/weber_penn_rules.hpp"
-#include "species/species.hpp"
+#include "growth/weber_penn/weber_penn_rules.hpp"
+#include "growth/weber_penn/species.hpp"
 
 using namespace arbor;
 using Catch::Matchers::WithinAbs;

@@ -8,7 +8,7 @@ arbor="${ARBOR:-$root/build/tools/arbor}"  # ARBOR: another build to compare
 [ -x "$arbor" ] || { echo "$arbor is missing: run tools/build.sh first" >&2; exit 2; }
 json="$(mktemp)"
 trap 'rm -f "$json"' EXIT
-inputs=$("$arbor" species --list | awk '/^  / {print $1}')
+inputs=$("$arbor" species --list | awk '/^presets/ {p = 1; next} p && /^  / {print $1}')
 inputs="$inputs $(ls "$species"/*.xml 2>/dev/null || true)"
 echo "| species (seeds 1 / 2 / 3) | quads | mesh-made | skeleton-made | folds | neck crossings |"
 echo "|---|---|---|---|---|---|"

@@ -4,13 +4,9 @@
 #include <cmath>
 #include <numbers>
 #include <random>
+#include <stdexcept>
 
 #include <glm/gtc/matrix_transform.hpp>
-
-#include "common/input_error.hpp"
-#include "growth/weber_penn.hpp"
-#include "mesh/impostor_segments.hpp"
-#include "mesh/tree_mesh.hpp"
 
 namespace arbor::render {
 
@@ -68,41 +64,20 @@ std::vector<ForestPlacement> placeTrees(const std::vector<float>& crownRadii, st
   return placed;
 }
 
-Forest::Forest(const vk::VulkanContext& context, const ForestOptions& options, const std::function<void(const std::string&)>& progress) {
-  const std::uint32_t kinds = static_cast<std::uint32_t>(options.params.size()) * std::max(1u, options.seeds);
-  const std::uint32_t distinct = std::min({kinds, std::max(1u, options.trees), TreeRenderer::kMaxTrees / kDetailLevels});
-  // Each detail meshes fewer levels than the one before; all three together hold at most three full meshes.
-  const auto tooMany = [&](double quads) {
-    return LimitError("the forest's " + std::to_string(distinct) + " distinct trees would hold about " + std::to_string(static_cast<long long>(quads)) +
-                      " quads at their three details, more than the limit of " + std::to_string(options.maxQuads) +
-                      "; give fewer species or --seeds, or lower Levels");
-  };
-  double estimated = 0.0;
-  for (std::uint32_t t = 0; t < distinct; ++t) estimated += estimateTree(options.params[t % options.params.size()]).quads;
-  if (estimated > static_cast<double>(options.maxQuads)) throw tooMany(estimated);
-  std::size_t quads = 0;
-  for (std::uint32_t t = 0; t < distinct; ++t) {
-    const std::size_t s = t % options.params.size();
-    const std::uint64_t seed = options.seed + t / options.params.size();
+Forest::Forest(const vk::VulkanContext& context, const std::vector<DetailedTree>& trees, std::uint32_t instances, std::uint64_t seed) {
+  if (trees.empty()) throw std::invalid_argument("a forest needs at least one tree");
+  for (const DetailedTree& built : trees) {
+    if (built.details.size() != kDetailLevels) throw std::invalid_argument("a forest tree needs " + std::to_string(kDetailLevels) + " details");
     ForestTree tree;
-    tree.label = options.species[s] + " #" + std::to_string(seed);
-    progress("growing " + tree.label + " (" + std::to_string(t + 1) + "/" + std::to_string(distinct) + ")");
-    GrowthOptions growth;
-    growth.seed = seed;
-    const Skeleton skeleton = generateSkeleton(options.params[s], growth);
+    tree.label = built.label;
     float reach = 0.0f;
     for (std::uint32_t d = 0; d < kDetailLevels; ++d) {
-      // The deepest d levels as fake branches over a mesh of the others (one skeleton: the same tree).
-      const auto [mesh, impostors, sketch] = meshWithFakeBranches(skeleton, std::max(1, skeleton.levels - static_cast<int>(d)));
-      quads += mesh.mesh.quads.size();
-      if (quads > options.maxQuads) throw tooMany(static_cast<double>(quads));
-      tree.detail[d] = uploadTree(context, mesh.mesh, buildPatches(mesh.mesh), skeleton.leaves, impostors, sketch, true);
-      if (d == 0) {
-        for (const glm::vec3& p : mesh.mesh.positions) reach = std::max(reach, glm::length(glm::vec2(p)));
-      }
+      const TreeGeometry& g = built.details[d];
+      tree.detail[d] = uploadTree(context, g.mesh.mesh, g.patches, built.leaves, g.impostors, g.sketch, true);
     }
+    for (const glm::vec3& p : built.details[0].mesh.mesh.positions) reach = std::max(reach, glm::length(glm::vec2(p)));
     tree.bounds = tree.detail[0].bounds;
-    for (const Leaf& leaf : skeleton.leaves) {
+    for (const Leaf& leaf : built.leaves) {
       const glm::vec3 p(leaf.position);
       const auto length = static_cast<float>(leaf.length);
       reach = std::max(reach, glm::length(glm::vec2(p)) + length);
@@ -116,8 +91,8 @@ Forest::Forest(const vk::VulkanContext& context, const ForestOptions& options, c
   }
   std::vector<float> radii;
   for (const ForestTree& t : trees_) radii.push_back(t.crownRadius);
-  placements_ = placeTrees(radii, std::max(1u, options.trees), options.seed, radius_);
-  if (options.trees <= 1) placements_.front().rotation = 0.0f;  // a single tree as `arbor render` shows it
+  placements_ = placeTrees(radii, std::max(1u, instances), seed, radius_);
+  if (instances <= 1) placements_.front().rotation = 0.0f;  // a single tree as `arbor render` shows it
 }
 
 std::vector<const GpuTree*> Forest::gpuTrees() const {

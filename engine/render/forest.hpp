@@ -1,7 +1,7 @@
 #pragma once
-// A forest for the walkthrough: a few distinct trees (species x seed), each grown once, meshed at two levels
-// of detail and instanced many times; placed without overlapping crowns; each frame the visible instances
-// with the level of detail their distance asks for.
+// A forest for the walkthrough: a few distinct trees, built elsewhere (tree/forest_trees) at three levels of
+// detail, uploaded once and instanced many times; placed without overlapping crowns; each frame the visible
+// instances with the level of detail their distance asks for.
 #include <array>
 #include <functional>
 #include <memory>
@@ -10,20 +10,9 @@
 
 #include "gpu_tree.hpp"
 #include "renderer.hpp"
-#include "growth/tree_estimate.hpp"
-#include "species/species.hpp"
+#include "tree/forest_trees.hpp"
 
 namespace arbor::render {
-
-struct ForestOptions {
-  std::vector<std::string> species;  // names shown in progress and the overlay, one per entry of `params`
-  std::vector<SpeciesParams> params;
-  std::uint32_t trees = 1;           // instances (1: one tree at the origin)
-  std::uint32_t seeds = 3;           // distinct seeds per species
-  std::uint64_t seed = 1;            // first seed; also drives the placement
-  // All details of all distinct trees together: GPU memory (host memory on lavapipe) stays bounded.
-  std::size_t maxQuads = 3 * TreeLimits{}.quads;
-};
 
 // Levels of detail of each distinct tree: every stem level meshed; the deepest level as fake branches; the
 // two deepest (the mesh keeps at least the trunk).
@@ -58,9 +47,9 @@ struct ForestFrame {
 
 class Forest {
  public:
-  // Grows, meshes and uploads the distinct trees (progress: one line per tree) and places the instances. Throws
-  // LimitError, before growing where the estimates show it, when the distinct trees pass options.maxQuads.
-  Forest(const vk::VulkanContext& context, const ForestOptions& options, const std::function<void(const std::string&)>& progress);
+  // Uploads the distinct trees (each with kDetailLevels details) and places `instances` of them, in turn,
+  // deterministically for `seed`; one instance stands unrotated at the origin.
+  Forest(const vk::VulkanContext& context, const std::vector<DetailedTree>& trees, std::uint32_t instances, std::uint64_t seed);
 
   // For TreeRenderer::setTrees: the details of each distinct tree, in that order.
   std::vector<const GpuTree*> gpuTrees() const;

@@ -70,4 +70,22 @@ std::string lastJsonKeyBefore(const std::string& text, std::size_t at) {
   return "";
 }
 
+std::size_t jsonNestingPast(const std::string& text, int maxDepth) {
+  int depth = 0;
+  bool inString = false, escaped = false;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (inString) {
+      if (escaped) escaped = false;
+      else if (c == '\\') escaped = true;
+      else if (c == '"') inString = false;
+      continue;
+    }
+    if (c == '"') inString = true;
+    else if ((c == '{' || c == '[') && ++depth > maxDepth) return i;
+    else if (c == '}' || c == ']') --depth;
+  }
+  return std::string::npos;
+}
+
 }  // namespace arbor

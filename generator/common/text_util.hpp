@@ -16,4 +16,8 @@ std::string closestName(const std::string& name, const std::vector<std::string>&
 // The last "key": seen before byte `at` of a JSON text, for naming the field a parse error sits in.
 std::string lastJsonKeyBefore(const std::string& text, std::size_t at);
 
+// Where JSON text first nests objects or arrays deeper than maxDepth (outside strings), or npos: checked
+// before a recursive parser meets it.
+std::size_t jsonNestingPast(const std::string& text, int maxDepth);
+
 }  // namespace arbor

@@ -3,7 +3,7 @@
 // (the engine tessellates on the GPU instead and never needs this).
 #include <cstddef>
 
-#include "growth/tree_estimate.hpp"
+#include "growth/tree_limits.hpp"
 #include "mesh/quad_mesh.hpp"
 
 namespace arbor {

@@ -50,12 +50,4 @@ std::vector<ImpostorSegment> sketchSegments(const Skeleton& skeleton, int fromLe
   return segments;
 }
 
-FakedTree meshWithFakeBranches(const Skeleton& skeleton, int meshLevels) {
-  const bool faked = meshLevels < skeleton.levels;
-  MeshOptions options;
-  options.levels = faked ? meshLevels : 0;
-  if (!faked) return {buildTreeMesh(skeleton, options), {}, {}};
-  return {buildTreeMesh(skeleton, options), impostorSegments(skeleton, meshLevels), sketchSegments(skeleton, meshLevels, skeleton.levels - 1)};
-}
-
 }  // namespace arbor

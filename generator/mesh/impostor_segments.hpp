@@ -22,14 +22,4 @@ std::vector<ImpostorSegment> impostorSegments(const Skeleton& skeleton, int from
 // joint to joint (the nodes around branch points left out): the tupelo's is a quarter of impostorSegments'.
 std::vector<ImpostorSegment> sketchSegments(const Skeleton& skeleton, int fromLevel, int belowLevel);
 
-// A tree whose deepest levels are fake branches: the mesh of the stems below `meshLevels` and the segments of
-// the others (every level meshed and no segments when meshLevels reaches the skeleton's levels), and their
-// sketch without the deepest level (its twigs are below a pixel where the sketch is drawn).
-struct FakedTree {
-  TreeMesh tree;
-  std::vector<ImpostorSegment> impostors;
-  std::vector<ImpostorSegment> sketch;
-};
-FakedTree meshWithFakeBranches(const Skeleton& skeleton, int meshLevels);
-
 }  // namespace arbor

@@ -2,7 +2,7 @@
 // Choices the mesh stage leaves to the user (arbor generate --ring-spacing, --open-base, ...).
 #include <cstddef>
 
-#include "growth/tree_estimate.hpp"
+#include "growth/tree_limits.hpp"
 
 namespace arbor {
 

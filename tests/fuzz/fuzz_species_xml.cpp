@@ -1,8 +1,8 @@
 // Arbaro XML: parsed, and when valid grown and meshed under the default limits.
 #include "fuzz_target.hpp"
-#include "growth/weber_penn.hpp"
+#include "growth/weber_penn/weber_penn.hpp"
 #include "mesh/tree_mesh.hpp"
-#include "species/species_io.hpp"
+#include "growth/weber_penn/species_io.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   return arbor::fuzz::guarded(data, size, [](const std::string& text) {

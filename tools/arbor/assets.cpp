@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include "common/input_file.hpp"
+#include "growth/growth_models.hpp"
 
 namespace arbor::cli {
 
@@ -46,26 +47,15 @@ void addAnglesOption(CLI::App* cmd, AngleChoice& angles) {
           "natural|file"));
 }
 
-namespace {
-
-SpeciesParams withAngles(SpeciesParams p, AngleChoice angles) {
-  if (angles == AngleChoice::Natural) p.angleRule = AngleRule::Natural;
-  return p;
-}
-
-}  // namespace
-
-SpeciesParams loadSpeciesArgument(const std::string& presetOrFile, ImportNotes* notes, AngleChoice angles) {
-  if (inputExists(presetOrFile)) return withAngles(loadSpeciesFile(presetOrFile, notes), angles);
+TreeModel loadModelArgument(const std::string& presetOrFile, ImportNotes* notes, AngleChoice angles) {
+  const ModelReadOptions options{angles == AngleChoice::Natural, notes};
+  if (inputExists(presetOrFile)) return loadModelFile(presetOrFile, options);
   const fs::path preset = fs::path(assetDirectory()) / "presets" / (presetOrFile + ".json");
   std::error_code ec;
-  if (presetOrFile.find('/') == std::string::npos && fs::is_regular_file(preset, ec)) {
-    return withAngles(loadSpeciesFile(preset.string(), notes), angles);
-  }
+  if (presetOrFile.find('/') == std::string::npos && fs::is_regular_file(preset, ec)) return loadModelFile(preset.string(), options);
   std::string list;
   for (const std::string& name : presetNames()) list += (list.empty() ? "" : ", ") + name;
-  throw SpeciesError(presetOrFile, "(argument)",
-                     "is neither a species file (.json, .xml) nor a preset; presets: " + list);
+  throw InputError(presetOrFile, "(argument)", "is neither a model file (.json, .xml) nor a preset; presets: " + list);
 }
 
 }  // namespace arbor::cli

@@ -4,8 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "species/species.hpp"
-#include "species/species_io.hpp"
+#include "growth/growth_model.hpp"
 
 namespace arbor::cli {
 
@@ -21,9 +20,8 @@ enum class AngleChoice { File, Natural };
 // --angles natural|file on a command that loads species; a bad value is a usage error (exit 2) naming both.
 void addAnglesOption(CLI::App* cmd, AngleChoice& angles);
 
-// A path that exists is read as a species file; otherwise the argument must name a preset.
-// Throws SpeciesError naming the argument and the presets on offer.
-SpeciesParams loadSpeciesArgument(const std::string& presetOrFile, ImportNotes* notes = nullptr,
-                                  AngleChoice angles = AngleChoice::File);
+// A path that exists is read as a model file (any growth model, or an Arbaro species); otherwise the argument
+// must name a preset. Throws InputError naming the argument and the presets on offer.
+TreeModel loadModelArgument(const std::string& presetOrFile, ImportNotes* notes = nullptr, AngleChoice angles = AngleChoice::File);
 
 }  // namespace arbor::cli

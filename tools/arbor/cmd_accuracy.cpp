@@ -7,7 +7,7 @@
 #include "assets.hpp"
 #include "cli_values.hpp"
 #include "commands.hpp"
-#include "growth/weber_penn.hpp"
+#include "growth/growth_model.hpp"
 #include "mesh/tree_mesh.hpp"
 #include "patches/acc_accuracy.hpp"
 #include "patches/patch_set.hpp"
@@ -37,7 +37,7 @@ int runAccuracy(const AccuracyOptions& o) {
     GrowthOptions growth;
     growth.seed = o.seed;
     growth.levels = o.levels;
-    const TreeMesh tree = buildTreeMesh(generateSkeleton(loadSpeciesArgument(name, nullptr, o.angles), growth));
+    const TreeMesh tree = buildTreeMesh(loadModelArgument(name, nullptr, o.angles).grow(growth));
     const PatchSet set = buildPatches(tree.mesh);
     const AccAccuracy a = measureAccAccuracy(tree.mesh, set, o.maxPatches, o.samples);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -7,7 +7,7 @@
 #include "assets.hpp"
 #include "cli_values.hpp"
 #include "commands.hpp"
-#include "growth/weber_penn.hpp"
+#include "growth/growth_model.hpp"
 #include "mesh/tree_mesh.hpp"
 #include "patches/patch_set.hpp"
 
@@ -28,7 +28,7 @@ int runBenchGenerate(const BenchOptions& o) {
   std::printf("%-22s %6s %9s %9s %9s %10s %10s\n", "species", "levels", "stems", "nodes", "leaves", "median ms",
               "min ms");
   for (std::size_t i = 0; i < names.size(); ++i) {
-    const SpeciesParams params = loadSpeciesArgument(names[i], nullptr, o.angles);
+    const TreeModel model = loadModelArgument(names[i], nullptr, o.angles);
     GrowthOptions growth;
     growth.seed = o.seed;
     growth.levels = o.levels;
@@ -36,7 +36,7 @@ int runBenchGenerate(const BenchOptions& o) {
     Skeleton skeleton;
     for (int r = 0; r < o.repeat; ++r) {
       const auto start = std::chrono::steady_clock::now();
-      skeleton = generateSkeleton(params, growth);
+      skeleton = model.grow(growth);
       times.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
     }
     std::sort(times.begin(), times.end());
@@ -57,7 +57,7 @@ int runBenchMesh(const BenchOptions& o) {
   std::printf("%-22s %6s %9s %9s %8s %11s %9s %10s %10s\n", "species", "levels", "quads", "patches", "regular",
               "skeleton ms", "mesh ms", "patches ms", "total ms");
   for (const std::string& name : names) {
-    const SpeciesParams params = loadSpeciesArgument(name, nullptr, o.angles);
+    const TreeModel model = loadModelArgument(name, nullptr, o.angles);
     GrowthOptions growth;
     growth.seed = o.seed;
     growth.levels = o.levels;
@@ -68,7 +68,7 @@ int runBenchMesh(const BenchOptions& o) {
     auto ms = [](Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double, std::milli>(b - a).count(); };
     for (int r = 0; r < o.repeat; ++r) {
       const auto t0 = Clock::now();
-      const Skeleton skeleton = generateSkeleton(params, growth);
+      const Skeleton skeleton = model.grow(growth);
       const auto t1 = Clock::now();
       const TreeMesh tree = buildTreeMesh(skeleton);
       const auto t2 = Clock::now();

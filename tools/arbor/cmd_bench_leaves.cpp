@@ -12,7 +12,7 @@
 #include "cli_values.hpp"
 #include "commands.hpp"
 #include "common/atomic_file.hpp"
-#include "growth/weber_penn.hpp"
+#include "growth/growth_model.hpp"
 #include "mesh/tree_mesh.hpp"
 #include "render_options.hpp"
 
@@ -41,7 +41,7 @@ int runBenchLeaves(const BenchLeavesOptions& o) {
   std::vector<std::uint32_t> counts, shadows;
   for (float c : parseNumbers(o.counts, "--counts", 1.0f, 4.0e6f)) counts.push_back(static_cast<std::uint32_t>(c));
   for (float c : parseNumbers(o.shadows, "--shadow-leaves", 0.0f, 4096.0f)) shadows.push_back(static_cast<std::uint32_t>(c));
-  if (counts.empty()) throw SpeciesError(o.counts, "--counts", "give at least one leaf count");
+  if (counts.empty()) throw InputError(o.counts, "--counts", "give at least one leaf count");
   if (shadows.empty()) shadows.push_back(0);
   render::RenderSettings base;
   base.mode = parseMode(o.mode, "--mode");
@@ -54,12 +54,12 @@ int runBenchLeaves(const BenchLeavesOptions& o) {
 
   // The mesh keeps the species' levels; more levels are grown (the same tree below, breadth-first) until the
   // deepest carries enough leaves for the largest count.
-  const SpeciesParams params = loadSpeciesArgument(o.species, nullptr, o.angles);
+  const TreeModel model = loadModelArgument(o.species, nullptr, o.angles);
   const std::uint32_t most = *std::max_element(counts.begin(), counts.end());
   GrowthOptions growth;
   growth.seed = o.seed;
-  growth.levels = params.levels;
-  Skeleton skeleton = generateSkeleton(params, growth);
+  growth.levels = model.levels();
+  Skeleton skeleton = model.grow(growth);
   // Deeper levels are not always leafier (children that run out of wood are not grown): keep the leafiest.
   int leafiestLevels = growth.levels;
   while (skeleton.leaves.size() < most && growth.levels < 8) {
@@ -67,7 +67,7 @@ int runBenchLeaves(const BenchLeavesOptions& o) {
     ++growth.levels;
     Skeleton deeper;
     try {
-      deeper = generateSkeleton(params, growth);
+      deeper = model.grow(growth);
     } catch (const GenerationError& e) {
       std::fprintf(stderr, "arbor bench leaves: not at %d levels: %s\n", growth.levels, e.what());
       break;
@@ -79,11 +79,11 @@ int runBenchLeaves(const BenchLeavesOptions& o) {
   }
   growth.levels = leafiestLevels;
   if (skeleton.leaves.size() < most) {
-    throw SpeciesError(std::to_string(most), "--counts", o.species + " grows at most " + std::to_string(skeleton.leaves.size()) +
+    throw InputError(std::to_string(most), "--counts", o.species + " grows at most " + std::to_string(skeleton.leaves.size()) +
                                                            " leaves (at " + std::to_string(leafiestLevels) + " levels); give counts up to that");
   }
   MeshOptions meshOptions;
-  meshOptions.levels = params.levels;
+  meshOptions.levels = model.levels();
   const TreeMesh tree = buildTreeMesh(skeleton, meshOptions);
   const PatchSet patches = buildPatches(tree.mesh);
 
@@ -96,7 +96,7 @@ int runBenchLeaves(const BenchLeavesOptions& o) {
   const bool hostTimed = context.isLavapipe();  // its timestamps miss the deferred rasterisation
 
   std::printf("%s: %zu quads (%s, factor %g), %zu leaves grown at %d levels; %ux%u on %s, %d frames per row after one warm-up%s\n\n",
-              params.name.c_str(), tree.mesh.quads.size(), render::renderModeName(base.mode), static_cast<double>(base.tessLevel),
+              model.name().c_str(), tree.mesh.quads.size(), render::renderModeName(base.mode), static_cast<double>(base.tessLevel),
               skeleton.leaves.size(), growth.levels, width, height, context.deviceDescription().c_str(), o.frames,
               context.validationEnabled() ? ", validation on" : "");
   std::printf("| leaves | self-shadowing | triangles | CPU frame ms (min-max) | GPU frame ms (min-max) | frames/s |\n");

@@ -15,7 +15,9 @@
 #include "commands.hpp"
 #include "common/atomic_file.hpp"
 #include "export/subdivide.hpp"
-#include "growth/weber_penn.hpp"
+#include "grow_forest.hpp"
+#include "growth/growth_model.hpp"
+#include "tree/build_tree.hpp"
 #include "image/plot.hpp"
 #include "mesh/tree_mesh.hpp"
 #include "render/forest.hpp"
@@ -78,7 +80,7 @@ std::vector<Cell> makeCells(const BenchTessOptions& o) {
       cells.push_back(c);
     }
   }
-  if (cells.empty()) throw SpeciesError(o.modes, "--modes", "no mode given; allowed: flat, pn, acc, acc+disp, pn+disp");
+  if (cells.empty()) throw InputError(o.modes, "--modes", "no mode given; allowed: flat, pn, acc, acc+disp, pn+disp");
   return cells;
 }
 
@@ -113,12 +115,12 @@ int runBenchTess(const BenchTessOptions& o) {
   const std::vector<Cell> cells = makeCells(o);
   const bool forestScene = !o.scene.empty() && o.scene.front() == "forest";
   if (!o.scene.empty() && o.scene.front() != "tree" && !forestScene) {
-    throw SpeciesError(o.scene.front(), "--scene", "allowed: tree, or forest N (N trees, 1 to 1000)");
+    throw InputError(o.scene.front(), "--scene", "allowed: tree, or forest N (N trees, 1 to 1000)");
   }
   std::uint32_t forestTrees = 30;
   if (forestScene && o.scene.size() > 1) {
     const std::vector<float> n = parseNumbers(o.scene[1], "--scene", 1.0f, 1000.0f);
-    if (n.size() != 1) throw SpeciesError(o.scene[1], "--scene", "forest takes one tree count, 1 to 1000");
+    if (n.size() != 1) throw InputError(o.scene[1], "--scene", "forest takes one tree count, 1 to 1000");
     forestTrees = static_cast<std::uint32_t>(n.front());
   }
   if (!o.csv.empty()) requireOutputFile(o.csv, "--csv");
@@ -128,7 +130,7 @@ int runBenchTess(const BenchTessOptions& o) {
   csv << "mode,factor,adaptive_px,displacement,triangles,cpu_ms_median,cpu_ms_min,cpu_ms_max,gpu_ms_median,gpu_ms_min,"
          "gpu_ms_max,mtriangles_per_s,share_of_ceiling,gpu_bytes\n";
 
-  const SpeciesParams params = loadSpeciesArgument(o.species, nullptr, o.angles);
+  const TreeModel model = loadModelArgument(o.species, nullptr, o.angles);
   vk::VulkanContext context(vulkanOptions(o.validation, o.device));
   render::RenderSession session(context, width, height, VK_SAMPLE_COUNT_1_BIT, render::loadTreeTextures(assetDirectory()));
   const float aspect = static_cast<float>(width) / static_cast<float>(height);
@@ -137,14 +139,7 @@ int runBenchTess(const BenchTessOptions& o) {
   TreeMesh tree;
   double patchUploadMs = 0.0;  // the tessellated path's counterpart of subdividing and uploading
   if (forestScene) {
-    render::ForestOptions f;
-    f.species = {o.species};
-    f.params = {params};
-    f.trees = forestTrees;
-    f.seed = o.seed;
-    scene.forest = std::make_unique<render::Forest>(context, f, [](const std::string& line) {
-      std::fprintf(stderr, "arbor bench tess: %s\n", line.c_str());
-    });
+    scene.forest = growForest(context, ForestRequest{{o.species}, {model}, forestTrees, 3, o.seed}, "arbor bench tess");
     session.renderer().setTrees(scene.forest->gpuTrees());
     scene.camera = scene.forest->overview(aspect);
     // Every tree at its whole mesh, so that a factor means the same everywhere.
@@ -157,7 +152,7 @@ int runBenchTess(const BenchTessOptions& o) {
     GrowthOptions growth;
     growth.seed = o.seed;
     growth.levels = o.levels;
-    tree = buildTreeMesh(generateSkeleton(params, growth));
+    tree = buildTree(model.grow(growth), BuildOptions{{}, false}).mesh;  // patches are timed with the upload below
     const auto start = std::chrono::steady_clock::now();
     session.setTree(tree.mesh, buildPatches(tree.mesh));
     patchUploadMs = msSince(start);
@@ -170,7 +165,7 @@ int runBenchTess(const BenchTessOptions& o) {
   // Lavapipe rasterises when the render pass ends, after the timestamps: its whole frame is the host's wait.
   const bool hostTimed = context.isLavapipe();
 
-  std::printf("%s: %s at %ux%u on %s, %d frames per cell after one warm-up%s\n\n", params.name.c_str(), scene.description.c_str(),
+  std::printf("%s: %s at %ux%u on %s, %d frames per cell after one warm-up%s\n\n", model.name().c_str(), scene.description.c_str(),
               width, height, context.deviceDescription().c_str(), o.frames, context.validationEnabled() ? ", validation on" : "");
   std::fflush(stdout);
 

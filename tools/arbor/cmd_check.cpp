@@ -11,7 +11,7 @@
 #include "common/atomic_file.hpp"
 #include "common/json_writer.hpp"
 #include "common/text_util.hpp"
-#include "growth/weber_penn.hpp"
+#include "growth/growth_model.hpp"
 #include "mesh/self_intersection.hpp"
 #include "mesh/tree_mesh.hpp"
 #include "obj_quads.hpp"
@@ -46,14 +46,14 @@ Checked load(const CheckOptions& o) {
     c.tree.mesh = readObjQuads(o.input);
     c.title = o.input;
   } else {
-    const SpeciesParams params = loadSpeciesArgument(o.input, nullptr, o.angles);
+    const TreeModel model = loadModelArgument(o.input, nullptr, o.angles);
     GrowthOptions growth;
     growth.seed = o.seed;
     growth.levels = o.levels;
-    c.skeleton = generateSkeleton(params, growth);
+    c.skeleton = model.grow(growth);
     c.tree = buildTreeMesh(c.skeleton);
     c.grown = true;
-    c.title = params.name + ", seed " + std::to_string(o.seed) + ", " + std::to_string(c.skeleton.levels) + " levels";
+    c.title = model.name() + ", seed " + std::to_string(o.seed) + ", " + std::to_string(c.skeleton.levels) + " levels";
   }
   c.buildMs = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
   return c;

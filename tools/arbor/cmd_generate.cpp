@@ -11,12 +11,12 @@
 #include "common/text_util.hpp"
 #include "growth/skeleton_checks.hpp"
 #include "growth/skeleton_json.hpp"
-#include "growth/weber_penn.hpp"
 #include "export/gltf_export.hpp"
 #include "export/obj_export.hpp"
 #include "export/subdivide.hpp"
 #include "mesh/mesh_checks.hpp"
 #include "mesh/tree_mesh.hpp"
+#include "tree/build_tree.hpp"
 #include "patches/patch_set.hpp"
 
 namespace arbor::cli {
@@ -42,7 +42,7 @@ OutputType outputType(const std::string& path) {
   if (endsWith(path, ".obj")) return OutputType::Obj;
   if (endsWith(path, ".gltf")) return OutputType::Gltf;
   if (endsWith(path, ".glb")) return OutputType::Glb;
-  throw SpeciesError(path, "--out", "unsupported output type; allowed: .json (skeleton), .obj, .gltf, .glb (mesh)");
+  throw InputError(path, "--out", "unsupported output type; allowed: .json (skeleton), .obj, .gltf, .glb (mesh)");
 }
 
 void printNotes(const std::string& species, const ImportNotes& notes) {
@@ -63,10 +63,10 @@ int runGenerate(const GenerateOptions& o) {
   const OutputType type = outputType(o.out);
   requireOutputFile(o.out);
   if (type == OutputType::Skeleton && (o.subdivide > 0 || o.triangles)) {
-    throw SpeciesError(o.out, "--out", "--subdivide and --triangles apply to meshes (.obj, .gltf, .glb), not to a skeleton");
+    throw InputError(o.out, "--out", "--subdivide and --triangles apply to meshes (.obj, .gltf, .glb), not to a skeleton");
   }
   ImportNotes notes;
-  const SpeciesParams params = loadSpeciesArgument(o.species, &notes, o.angles);
+  const TreeModel model = loadModelArgument(o.species, &notes, o.angles);
   if (!o.quiet) printNotes(o.species, notes);
 
   GrowthOptions growth;
@@ -75,7 +75,7 @@ int runGenerate(const GenerateOptions& o) {
   using Clock = std::chrono::steady_clock;
   auto ms = [](Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double, std::milli>(b - a).count(); };
   const auto t0 = Clock::now();
-  const Skeleton skeleton = generateSkeleton(params, growth);
+  const Skeleton skeleton = model.grow(growth);
   const auto t1 = Clock::now();
 
   std::string content;
@@ -83,13 +83,13 @@ int runGenerate(const GenerateOptions& o) {
   QuadMesh subdivided;
   double meshMs = 0.0;
   if (type != OutputType::Skeleton) {
-    tree = buildTreeMesh(skeleton, o.mesh);
+    tree = buildTree(skeleton, BuildOptions{o.mesh, false}).mesh;  // patches are counted on another core below
     meshMs = ms(t1, Clock::now());
     if (o.subdivide > 0) subdivided = subdivide(tree.mesh, o.subdivide);
   }
   const QuadMesh& exported = o.subdivide > 0 ? subdivided : tree.mesh;
-  if (type == OutputType::Gltf) content = writeGltf(exported, params.name);
-  if (type == OutputType::Glb) content = writeGlb(exported, params.name);
+  if (type == OutputType::Gltf) content = writeGltf(exported, model.name());
+  if (type == OutputType::Glb) content = writeGlb(exported, model.name());
   // The summary's topology and patch counts are worked out on another core while the file is written.
   struct MeshSummary {
     MeshTopologyReport topology;
@@ -109,7 +109,7 @@ int runGenerate(const GenerateOptions& o) {
   for (std::size_t i = 0; i < stats.stemsPerLevel.size(); ++i) {
     perLevel += (i ? ", " : "") + std::to_string(stats.stemsPerLevel[i]);
   }
-  std::printf("%s, seed %llu, %d levels: skeleton in %.1f ms\n", params.name.c_str(),
+  std::printf("%s, seed %llu, %d levels: skeleton in %.1f ms\n", model.name().c_str(),
               static_cast<unsigned long long>(o.seed), skeleton.levels, ms(t0, t1));
   std::printf("  stems per level  %s\n", perLevel.c_str());
   std::printf("  nodes            %zu (%zu branch points)\n", stats.nodes, stats.branchPoints);
@@ -148,8 +148,8 @@ int runGenerate(const GenerateOptions& o) {
 
 void addGenerateCommand(CLI::App& app, Action& action) {
   auto o = std::make_shared<GenerateOptions>();
-  CLI::App* cmd = app.add_subcommand("generate", "Grow a tree from a preset or species file and write its skeleton or mesh.");
-  cmd->add_option("species", o->species, "Preset name (see 'arbor species --list') or a .json/.xml species file")
+  CLI::App* cmd = app.add_subcommand("generate", "Grow a tree from a preset or model file and write its skeleton or mesh.");
+  cmd->add_option("species", o->species, "Preset name (see 'arbor species --list'), a .json model file or an .xml Arbaro species file")
       ->required();
   addAnglesOption(cmd, o->angles);
   cmd->add_option("--seed", o->seed, "Random seed; the same seed gives byte-identical output")->check(Seed())->capture_default_str();

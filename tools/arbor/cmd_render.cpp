@@ -11,7 +11,8 @@
 #include "cli_values.hpp"
 #include "commands.hpp"
 #include "common/text_util.hpp"
-#include "growth/weber_penn.hpp"
+#include "growth/growth_model.hpp"
+#include "tree/build_tree.hpp"
 #include "image/png_io.hpp"
 #include "mesh/impostor_segments.hpp"
 #include "mesh/tree_mesh.hpp"
@@ -69,23 +70,24 @@ int runRender(const RenderOptions& o) {
   if (!o.light.empty()) settings.lightDirection = parseLight(o.light);
   std::uint32_t width = 0, height = 0;
   parseSize(o.size, width, height);
-  if (!endsWith(o.out, ".png")) throw SpeciesError(o.out, "--out", "the picture is written as PNG; use a .png name");
+  if (!endsWith(o.out, ".png")) throw InputError(o.out, "--out", "the picture is written as PNG; use a .png name");
   requireOutputFile(o.out);
 
-  const SpeciesParams params = loadSpeciesArgument(o.species, nullptr, o.angles);
+  const TreeModel model = loadModelArgument(o.species, nullptr, o.angles);
   // The mesh keeps --levels (or the species'); impostor levels grow beyond them (breadth-first: the same tree
   // below), are drawn as fake branches, and carry the leaves.
-  const int meshLevels = o.levels > 0 ? o.levels : params.levels;
+  const int meshLevels = o.levels > 0 ? o.levels : model.levels();
   if (meshLevels + impostorLevels > 8) {
-    throw SpeciesError(std::to_string(impostorLevels), "--impostor-levels",
+    throw InputError(std::to_string(impostorLevels), "--impostor-levels",
                        "mesh levels (" + std::to_string(meshLevels) + ") plus impostor levels may be at most 8");
   }
   GrowthOptions growth;
   growth.seed = o.seed;
   growth.levels = meshLevels + impostorLevels;
-  const Skeleton skeleton = generateSkeleton(params, growth);
-  const auto [tree, impostors, sketch] = meshWithFakeBranches(skeleton, meshLevels);
-  const PatchSet patches = buildPatches(tree.mesh);
+  const Skeleton skeleton = model.grow(growth);
+  BuildOptions build;
+  build.mesh.levels = meshLevels;
+  const auto [tree, patches, impostors, sketch] = buildTree(skeleton, build);
 
   vk::VulkanContext context(vulkanOptions(o.validation, o.device));
   const auto textures = render::loadTreeTextures(assetDirectory());
@@ -108,7 +110,7 @@ int runRender(const RenderOptions& o) {
     try {
       camera = render::parseCamera(o.camera);
     } catch (const std::invalid_argument& e) {
-      throw SpeciesError(o.camera, "--camera", e.what());
+      throw InputError(o.camera, "--camera", e.what());
     }
   } else {
     camera = render::frameBounds(render::plantedBounds(*session.tree()), o.azimuth, o.elevation, aspect);
@@ -129,7 +131,7 @@ int runRender(const RenderOptions& o) {
   std::sort(gpu.begin(), gpu.end());
   std::sort(cpu.begin(), cpu.end());
   const render::GpuTree& gpuTree = *session.tree();
-  std::printf("%s on %s%s\n", params.name.c_str(), context.deviceDescription().c_str(),
+  std::printf("%s on %s%s\n", model.name().c_str(), context.deviceDescription().c_str(),
               context.validationEnabled() ? ", validation on" : "");
   std::printf("  mode             %s", render::renderModeName(settings.mode));
   if (settings.mode != render::RenderMode::Flat) {

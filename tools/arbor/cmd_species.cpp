@@ -1,4 +1,5 @@
-// arbor species: list presets, show a species' parameters, or convert an Arbaro XML file to Arbor JSON.
+// arbor species: list growth models and presets, show a model file's parameters, or convert an Arbaro XML file
+// to Arbor JSON.
 #include <cstdio>
 #include <memory>
 
@@ -6,7 +7,7 @@
 #include "cli_values.hpp"
 #include "commands.hpp"
 #include "common/atomic_file.hpp"
-#include "species/species_io.hpp"
+#include "growth/growth_models.hpp"
 
 namespace arbor::cli {
 
@@ -19,28 +20,44 @@ struct SpeciesOptions {
   bool list = false;
   bool formatDoc = false;
   std::string random;  // a seed: a random species within the documented ranges
+  std::string model = "weber-penn";  // for --random and --format-doc
 };
 
+const GrowthModelInfo& modelNamed(const std::string& name) {
+  std::string names;
+  for (const GrowthModelInfo& m : growthModels()) {
+    if (name == m.name) return m;
+    names += std::string(names.empty() ? "" : ", ") + m.name;
+  }
+  throw InputError(name, "--model", "is not a growth model; allowed: " + names);
+}
+
 int runSpecies(const SpeciesOptions& o) {
+  const GrowthModelInfo& model = modelNamed(o.model);
   if (o.formatDoc) {
-    std::fputs(speciesFormatMarkdown().c_str(), stdout);
+    std::fputs(model.formatMarkdown().c_str(), stdout);
     return 0;
   }
   if (o.random.empty() && (o.list || o.species.empty())) {
+    std::printf("growth models:\n");
+    for (const GrowthModelInfo& m : growthModels()) std::printf("  %-12s %s (%s)\n", m.name, m.summary, m.format);
     std::printf("presets in %s/presets:\n", assetDirectory().c_str());
-    for (const std::string& name : presetNames()) std::printf("  %s\n", name.c_str());
+    for (const std::string& name : presetNames()) {
+      const TreeModel preset = loadModelArgument(name);
+      std::printf("  %-18s %-12s %s\n", name.c_str(), preset.model(), preset.name().c_str());
+    }
     return 0;
   }
-  if (!o.random.empty() && !o.species.empty()) throw SpeciesError(o.species, "--random", "give either a species or --random SEED, not both");
+  if (!o.random.empty() && !o.species.empty()) throw InputError(o.species, "--random", "give either a species or --random SEED, not both");
   if (!o.out.empty()) requireOutputFile(o.out);
   ImportNotes notes;
-  const SpeciesParams params = o.random.empty() ? loadSpeciesArgument(o.species, &notes, o.angles) : randomSpecies(std::stoull(o.random));
-  const std::string json = writeSpeciesJson(params);
+  const TreeModel tree = o.random.empty() ? loadModelArgument(o.species, &notes, o.angles) : model.random(std::stoull(o.random));
+  const std::string json = tree.toJson();
   if (o.out.empty()) {
     std::fputs(json.c_str(), stdout);
   } else {
     writeFileAtomically(o.out, json);
-    std::printf("wrote %s (%s)\n", o.out.c_str(), params.name.c_str());
+    std::printf("wrote %s (%s)\n", o.out.c_str(), tree.name().c_str());
   }
   for (const std::string& d : notes.defaulted) std::fprintf(stderr, "arbor: note: defaulted %s\n", d.c_str());
   return 0;
@@ -50,14 +67,15 @@ int runSpecies(const SpeciesOptions& o) {
 
 void addSpeciesCommand(CLI::App& app, Action& action) {
   auto o = std::make_shared<SpeciesOptions>();
-  CLI::App* cmd = app.add_subcommand("species", "List presets, or print / convert a species file as Arbor JSON.");
-  cmd->add_option("species", o->species, "Preset name or .json/.xml species file (omit to list presets)");
+  CLI::App* cmd = app.add_subcommand("species", "List growth models and presets, or print / convert a model file (an Arbaro species too) as Arbor JSON.");
+  cmd->add_option("species", o->species, "Preset name, .json model file or .xml Arbaro species file (omit to list models and presets)");
   addAnglesOption(cmd, o->angles);
   cmd->add_option("--out", o->out, "Write the species as Arbor JSON to this file instead of printing it");
-  cmd->add_flag("--list", o->list, "List the presets");
+  cmd->add_flag("--list", o->list, "List the growth models and the presets (with the model of each)");
   cmd->add_option("--random", o->random, "Write a random species: every field drawn evenly from its documented range (stress tests)")
       ->check(Seed());
-  cmd->add_flag("--format-doc", o->formatDoc, "Print the species format documentation (Markdown)");
+  cmd->add_flag("--format-doc", o->formatDoc, "Print the model file format documentation (Markdown) of --model");
+  cmd->add_option("--model", o->model, "Growth model for --random and --format-doc (default: weber-penn; see --list)");
   cmd->callback([o, &action] { action = [o] { return runSpecies(*o); }; });
 }
 

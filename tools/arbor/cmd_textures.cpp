@@ -8,7 +8,7 @@
 #include "commands.hpp"
 #include "image/bark_texture.hpp"
 #include "image/leaf_atlas.hpp"
-#include "species/species_io.hpp"
+#include "common/input_error.hpp"
 
 namespace arbor::cli {
 
@@ -27,7 +27,7 @@ bool isPowerOfTwo(int n) { return n > 0 && (n & (n - 1)) == 0; }
 int runTextures(const TexturesOptions& o) {
   // Powers of two so the renderer can build a full mip chain; bounded so a typo cannot fill the disk.
   if (!isPowerOfTwo(o.size) || o.size < kMinSize || o.size > kMaxSize) {
-    throw SpeciesError("arbor textures", "--size",
+    throw InputError("arbor textures", "--size",
                        std::to_string(o.size) + " is not allowed; allowed: a power of two from " +
                            std::to_string(kMinSize) + " to " + std::to_string(kMaxSize));
   }
@@ -36,7 +36,7 @@ int runTextures(const TexturesOptions& o) {
   const fs::path dir(o.out);
   std::error_code error;
   if (fs::exists(dir, error) && !fs::is_directory(dir, error)) {
-    throw SpeciesError(o.out, "--out", "exists and is not a directory");
+    throw InputError(o.out, "--out", "exists and is not a directory");
   }
   fs::create_directories(dir, error);
   if (error) throw std::runtime_error(o.out + ": cannot create the directory (" + error.message() + ")");

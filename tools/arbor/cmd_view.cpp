@@ -10,6 +10,7 @@
 #include <GLFW/glfw3.h>
 
 #include "assets.hpp"
+#include "grow_forest.hpp"
 #include "bench_support.hpp"
 #include "cli_values.hpp"
 #include "commands.hpp"
@@ -63,19 +64,8 @@ struct ViewOptions {
 };
 
 // What the overlay changes while the viewer runs.
-render::ForestOptions forestOptions(const ViewOptions& o, const std::vector<SpeciesParams>& params) {
-  render::ForestOptions f;
-  f.species = o.species;
-  f.params = params;
-  f.trees = o.forest;
-  f.seeds = o.seeds;
-  f.seed = o.seed;
-  return f;
-}
-
-void progressLine(const std::string& text) {
-  std::fprintf(stderr, "arbor view: %s\n", text.c_str());
-  std::fflush(stderr);
+ForestRequest forestRequest(const ViewOptions& o, const std::vector<TreeModel>& models) {
+  return ForestRequest{o.species, models, o.forest, o.seeds, o.seed};
 }
 
 std::string screenshotName(const std::string& dir, int frame) {
@@ -94,7 +84,7 @@ std::optional<render::DetailDistances> parseDetail(const std::string& text) {
   if (text.empty()) return std::nullopt;
   const std::vector<float> v = parseNumbers(text, "--detail", 0.0f, 100000.0f);
   if (v.size() < 2 || v.size() > 3 || v[1] < v[0] || (v.size() == 3 && v[2] < v[1])) {
-    throw SpeciesError(text, "--detail", "expected FULL,REDUCED[,FAR] metres, each at least the one before, e.g. 40,150,400");
+    throw InputError(text, "--detail", "expected FULL,REDUCED[,FAR] metres, each at least the one before, e.g. 40,150,400");
   }
   return render::DetailDistances{v[0], v[1], v.size() == 3 ? v[2] : render::DetailDistances{}.far};
 }
@@ -102,7 +92,7 @@ std::optional<render::DetailDistances> parseDetail(const std::string& text) {
 // Everything the options say, read once before anything is grown, so that bad input fails early.
 struct ViewPlan {
   std::uint32_t width = 0, height = 0;
-  std::vector<SpeciesParams> params;
+  std::vector<TreeModel> models;
   std::vector<render::Camera> path;  // empty: the forest's tour
   std::vector<WindowEvent> events;
   std::optional<render::DetailDistances> detail;
@@ -145,7 +135,8 @@ int runOffscreen(const ViewOptions& o, const ViewPlan& plan, ViewState& state) {
   vk::VulkanContext context(vulkanOptions(o.validation, o.device));
   applyDeviceDefaults(o, plan, context, state);
   render::RenderSession session(context, width, height, VK_SAMPLE_COUNT_1_BIT, render::loadTreeTextures(assetDirectory()));
-  const render::Forest forest(context, forestOptions(o, plan.params), progressLine);
+  const std::unique_ptr<render::Forest> grown = growForest(context, forestRequest(o, plan.models), "arbor view");
+  const render::Forest& forest = *grown;
   session.renderer().setTrees(forest.gpuTrees());
   const float aspect = static_cast<float>(width) / static_cast<float>(height);
   const std::vector<render::Camera> keys = path.empty() ? forest.tour(aspect) : path;
@@ -173,7 +164,7 @@ int runOffscreen(const ViewOptions& o, const ViewPlan& plan, ViewState& state) {
 
 int runWindow(const ViewOptions& o, ViewPlan& plan, ViewState& state) {
   const std::vector<render::Camera>& path = plan.path;
-  std::vector<SpeciesParams>& params = plan.params;  // the panel edits them
+  std::vector<TreeModel>& models = plan.models;  // the panel edits them
   const int frames = plan.frames, every = plan.every;
   window::Window win("Arbor", static_cast<int>(plan.width), static_cast<int>(plan.height));
   if (o.fullscreen) win.toggleFullscreen();
@@ -187,7 +178,7 @@ int runWindow(const ViewOptions& o, ViewPlan& plan, ViewState& state) {
   {
     window::Swapchain swapchain(context, surface, win.framebufferSize(), !o.noVsync);
     render::TreeRenderer renderer(context, swapchain.renderPass(), VK_SAMPLE_COUNT_1_BIT, render::loadTreeTextures(assetDirectory()));
-    auto forest = std::make_unique<render::Forest>(context, forestOptions(o, params), progressLine);
+    auto forest = growForest(context, forestRequest(o, models), "arbor view");
     renderer.setTrees(forest->gpuTrees());
     window::Overlay overlay(context, win.handle(), swapchain.renderPass(), swapchain.imageCount());
     const bool scripted = frames > 0;
@@ -256,7 +247,7 @@ int runWindow(const ViewOptions& o, ViewPlan& plan, ViewState& state) {
       visible = forest->frame(camera, aspectOf(swapchain.extent()), state.detail);
       if (state.showOverlay) {
         overlay.newFrame();
-        drawPanel(state, visible, stats, params, o.species, context.deviceDescription());
+        drawPanel(state, visible, stats, models, o.species, context.deviceDescription());
       }
       VkCommandBuffer cmd = VK_NULL_HANDLE;
       if (!swapchain.beginFrame(cmd)) {
@@ -295,14 +286,14 @@ int runWindow(const ViewOptions& o, ViewPlan& plan, ViewState& state) {
       if (!current) swapchain.recreate(win.framebufferSize());
       if (state.regenerate) {
         state.regenerate = false;
-        updateEstimates(state, params, o.species);  // the panel's button is off past the limits; --events is not
+        updateEstimates(state, models, o.species);  // the panel's button is off past the limits; --events is not
         if (!state.refusal.empty()) {
           std::fprintf(stderr, "arbor view: not regenerated, keeping the previous trees: %s\n", state.refusal.c_str());
           continue;
         }
         swapchain.waitIdle();
         try {
-          auto grown = std::make_unique<render::Forest>(context, forestOptions(o, params), progressLine);
+          auto grown = growForest(context, forestRequest(o, models), "arbor view");
           renderer.setTrees(grown->gpuTrees());
           forest = std::move(grown);
         } catch (const std::exception& e) {
@@ -343,7 +334,7 @@ int runView(const ViewOptions& o) {
   parseSize(o.size, plan.width, plan.height);
   plan.detail = parseDetail(o.detail);
   plan.events = parseEvents(o.events);
-  for (const std::string& name : o.species) plan.params.push_back(loadSpeciesArgument(name, nullptr, o.angles));
+  for (const std::string& name : o.species) plan.models.push_back(loadModelArgument(name, nullptr, o.angles));
   if (!o.cameraPath.empty()) plan.path = readCameraPath(o.cameraPath);
   // Scripted: a camera path or a frame count; without a display the scene goes to PNG files instead.
   const bool scripted = !o.cameraPath.empty() || o.frames > 0;

@@ -4,9 +4,8 @@
 #include <iostream>
 
 #include "commands.hpp"
-#include "growth/weber_penn.hpp"
+#include "common/input_error.hpp"
 #include "vk/context.hpp"
-#include "species/species_io.hpp"
 
 namespace arbor::cli {
 

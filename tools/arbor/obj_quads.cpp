@@ -6,7 +6,7 @@
 
 #include "common/input_error.hpp"
 #include "common/input_file.hpp"
-#include "growth/tree_estimate.hpp"
+#include "growth/tree_limits.hpp"
 
 namespace arbor::cli {
 

@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <cstdlib>
 
-#include "species/species_io.hpp"
+#include "common/input_error.hpp"
 
 namespace arbor::cli {
 
@@ -12,7 +12,7 @@ render::RenderMode parseMode(const std::string& mode, const std::string& field) 
   if (mode == "flat") return render::RenderMode::Flat;
   if (mode == "pn") return render::RenderMode::PN;
   if (mode == "acc") return render::RenderMode::ACC;
-  throw SpeciesError(mode, field, "unknown mode; allowed: flat, pn, acc");
+  throw InputError(mode, field, "unknown mode; allowed: flat, pn, acc");
 }
 
 bool validationWanted(bool flag) {

@@ -6,11 +6,32 @@
 
 #include <imgui.h>
 
-#include "species/species_fields.hpp"
 
 namespace arbor::cli {
 
-void drawPanel(ViewState& state, const render::ForestFrame& frame, const render::FrameStats& stats, std::vector<SpeciesParams>& params,
+namespace {
+
+// One parameter as a slider over its documented range (very wide ranges stop at 1e4); true when moved.
+bool parameterSlider(TreeModel& model, std::size_t index, const ModelParameter& p) {
+  const float hi = static_cast<float>(std::min(p.max, 1e4)), lo = static_cast<float>(p.min);
+  ImGui::PushID(static_cast<int>(index));
+  bool moved = false;
+  if (p.integer) {
+    int v = static_cast<int>(std::lround(model.value(index)));
+    moved = ImGui::SliderInt(p.key.c_str(), &v, static_cast<int>(lo), static_cast<int>(hi));
+    if (moved) model.setValue(index, v);
+  } else {
+    auto v = static_cast<float>(model.value(index));
+    moved = ImGui::SliderFloat(p.key.c_str(), &v, lo, hi);
+    if (moved) model.setValue(index, v);
+  }
+  ImGui::PopID();
+  return moved;
+}
+
+}  // namespace
+
+void drawPanel(ViewState& state, const render::ForestFrame& frame, const render::FrameStats& stats, std::vector<TreeModel>& models,
                const std::vector<std::string>& names, const std::string& device) {
   ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowSize(ImVec2(430, 540), ImGuiCond_FirstUseEver);
@@ -49,55 +70,28 @@ void drawPanel(ViewState& state, const render::ForestFrame& frame, const render:
   ImGui::SliderFloat("sun azimuth", &state.lightAzimuth, -180.0f, 180.0f);
   ImGui::SliderFloat("sun elevation", &state.lightElevation, -10.0f, 90.0f);
   s.lightDirection = render::sunDirection(state.lightAzimuth, state.lightElevation);
-  if (state.estimates.size() != params.size()) updateEstimates(state, params, names);
+  if (state.estimates.size() != models.size()) updateEstimates(state, models, names);
   bool edited = false;
-  for (std::size_t k = 0; k < params.size(); ++k) {
+  for (std::size_t k = 0; k < models.size(); ++k) {
     if (!ImGui::CollapsingHeader(names[k].c_str())) continue;
     ImGui::PushID(static_cast<int>(k));
     const TreeEstimate& e = state.estimates[k];
     ImGui::Text("about %.3g nodes, %.3g leaves, %.3g quads", e.nodes, e.leaves, e.quads);
-    for (const TreeField& f : treeFields()) {
-      if (f.real) {
-        auto v = static_cast<float>(params[k].*f.real);
-        if (ImGui::SliderFloat(f.key, &v, static_cast<float>(f.min), static_cast<float>(std::min(f.max, 1e4)))) {
-          params[k].*f.real = v;
-          edited = true;
-        }
-      } else if (f.integer && f.type == FieldType::Integer) {
-        int v = params[k].*f.integer;
-        if (ImGui::SliderInt(f.key, &v, static_cast<int>(f.min), static_cast<int>(std::min(f.max, 1e4)))) {
-          params[k].*f.integer = v;
-          edited = true;
-        }
-      }
-    }
-    // Levels beyond those given reuse the deepest entry; Levels may grow up to the entries there are.
-    params[k].levels = std::min(params[k].levels, static_cast<int>(params[k].stemLevels.size()));
-    for (std::size_t l = 0; l < params[k].stemLevels.size(); ++l) {
-      if (!ImGui::TreeNode(reinterpret_cast<void*>(l + 1), "level %zu", l)) continue;
-      StemLevelParams& lp = params[k].stemLevels[l];
-      for (const LevelField& f : levelFields()) {
-        if (f.real) {
-          auto v = static_cast<float>(lp.*f.real);
-          const float lo = l == 0 && f.real == &StemLevelParams::branches ? 1.0f : static_cast<float>(f.min);
-          const float hi = l == 0 && f.real == &StemLevelParams::branches ? 64.0f : static_cast<float>(f.max);
-          if (ImGui::SliderFloat(f.key, &v, lo, hi)) {
-            lp.*f.real = l == 0 && f.real == &StemLevelParams::branches ? std::round(v) : v;
-            edited = true;
-          }
-        } else if (f.integer) {
-          int v = lp.*f.integer;
-          if (ImGui::SliderInt(f.key, &v, static_cast<int>(f.min), static_cast<int>(f.max))) {
-            lp.*f.integer = v;
-            edited = true;
-          }
-        }
-      }
-      ImGui::TreePop();
+    const std::vector<ModelParameter> parameters = models[k].parameters();
+    std::size_t i = 0;
+    while (i < parameters.size()) {
+      // A run of parameters with one group: the tree's own in the open, each other group under its heading.
+      const std::string& group = parameters[i].group;
+      std::size_t end = i;
+      while (end < parameters.size() && parameters[end].group == group) ++end;
+      const bool open = group.empty() || ImGui::TreeNode(group.c_str());
+      for (; open && i < end; ++i) edited |= parameterSlider(models[k], i, parameters[i]);
+      if (open && !group.empty()) ImGui::TreePop();
+      i = end;
     }
     ImGui::PopID();
   }
-  if (edited) updateEstimates(state, params, names);
+  if (edited) updateEstimates(state, models, names);
   if (state.refusal.empty()) {
     if (ImGui::Button("regenerate")) state.regenerate = true;
   } else {
@@ -110,11 +104,11 @@ void drawPanel(ViewState& state, const render::ForestFrame& frame, const render:
   ImGui::End();
 }
 
-void updateEstimates(ViewState& state, const std::vector<SpeciesParams>& params, const std::vector<std::string>& names) {
+void updateEstimates(ViewState& state, const std::vector<TreeModel>& models, const std::vector<std::string>& names) {
   state.estimates.clear();
   state.refusal.clear();
-  for (std::size_t k = 0; k < params.size(); ++k) {
-    state.estimates.push_back(estimateTree(params[k]));
+  for (std::size_t k = 0; k < models.size(); ++k) {
+    state.estimates.push_back(models[k].estimate());
     const std::string excess = state.estimates.back().excess(TreeLimits{});
     if (!excess.empty() && state.refusal.empty()) state.refusal = names[k] + ": " + excess;
   }

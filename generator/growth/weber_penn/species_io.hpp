@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "common/input_error.hpp"
+#include "growth/growth_model.hpp"
 #include "species.hpp"
 
 namespace arbor {
@@ -15,14 +16,11 @@ class SpeciesError : public InputError {
   using InputError::InputError;
 };
 
+// The name species files give their growth model ("model": "weber-penn"; absent means the same).
+constexpr const char* kWeberPennModel = "weber-penn";
+
 // Species files are small; anything larger is refused before it is parsed.
 constexpr std::size_t kMaxSpeciesFileBytes = 1024 * 1024;
-
-// Parameters an Arbaro file left out and the default each took (reported, never silent).
-struct ImportNotes {
-  std::vector<std::string> defaulted;  // "0Branches=1", ...
-  std::vector<std::string> ignored;    // Arbaro parameters read but not used ("Smooth", ...)
-};
 
 SpeciesParams readSpeciesJson(const std::string& text, const std::string& file);
 SpeciesParams readSpeciesXml(const std::string& text, const std::string& file, ImportNotes* notes = nullptr);

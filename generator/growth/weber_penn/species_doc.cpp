@@ -39,7 +39,9 @@ std::string speciesFormatMarkdown() {
       "`arbor` exits with code 2: unknown fields (with a suggestion), wrong types, values out of range,\n"
       "NaN or infinity, missing required fields, and broken JSON (with line and column).\n\n"
       "Optional fields take the default shown; `arbor species FILE` prints a species with every field\n"
-      "written out. `\"Format\": \"arbor-species/1\"` may be given and is checked when present.\n\n"
+      "written out. `\"Format\": \"arbor-species/1\"` may be given and is checked when present, and so may\n"
+      "`\"model\": \"weber-penn\"`, the growth model a species file is read by (absent means the same; any other\n"
+      "model name goes to that model's reader: docs/growth-models.md).\n\n"
       "## Tree fields\n\n| field | allowed | default | meaning |\n|---|---|---|---|\n";
   for (const TreeField& f : treeFields()) {
     md += std::string("| `") + f.key + "` | " + allowed(f.type, f.min, f.max) + " | " + defaultText(f) + " | " + f.doc +

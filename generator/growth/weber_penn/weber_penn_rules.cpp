@@ -4,7 +4,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "species/species.hpp"
+#include "species.hpp"
 
 namespace arbor::wp {
 

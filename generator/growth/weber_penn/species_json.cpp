@@ -18,6 +18,7 @@ using nlohmann::ordered_json;
 constexpr const char* kFormatKey = "Format";
 constexpr const char* kFormatValue = "arbor-species/1";
 constexpr const char* kLevelsKey = "StemLevels";
+constexpr const char* kModelKey = "model";  // the growth model a file names (growth/growth_models.cpp)
 
 std::string typeName(const json& v) {
   if (v.is_null()) return "null";
@@ -135,26 +136,10 @@ StemLevelParams readLevel(const json& entry, std::size_t index, const std::strin
 
 // Brackets nested deeper than any species file needs are refused before the parser recurses into them.
 void requireShallow(const std::string& text, const std::string& file, int maxDepth) {
-  int depth = 0;
-  bool inString = false, escaped = false;
-  for (std::size_t i = 0; i < text.size(); ++i) {
-    const char c = text[i];
-    if (inString) {
-      if (escaped) escaped = false;
-      else if (c == '\\') escaped = true;
-      else if (c == '"') inString = false;
-      continue;
-    }
-    if (c == '"') inString = true;
-    else if (c == '{' || c == '[') {
-      if (++depth > maxDepth) {
-        throw SpeciesError(file, "(document)", "nested deeper than " + std::to_string(maxDepth) + " levels at " + lineAndColumn(text, i) +
-                                                   "; a species file is an object of numbers with one array of level objects");
-      }
-    } else if (c == '}' || c == ']') {
-      --depth;
-    }
-  }
+  const std::size_t at = jsonNestingPast(text, maxDepth);
+  if (at == std::string::npos) return;
+  throw SpeciesError(file, "(document)", "nested deeper than " + std::to_string(maxDepth) + " levels at " + lineAndColumn(text, at) +
+                                             "; a species file is an object of numbers with one array of level objects");
 }
 
 // Where the parser stands: one frame per open object or array, so that a repeated key can be named by its path.
@@ -233,8 +218,11 @@ SpeciesParams readSpeciesJson(const std::string& text, const std::string& file) 
   const json root = parseStrict(text, file);
   if (!root.is_object()) throw SpeciesError(file, "(document)", "expected a JSON object of species parameters");
 
-  std::vector<const char*> extra = {kFormatKey, kLevelsKey};
-  rejectUnknownKeys(root, treeFields(), file, "", {kFormatKey, kLevelsKey});
+  rejectUnknownKeys(root, treeFields(), file, "", {kFormatKey, kLevelsKey, kModelKey});
+  if (root.contains(kModelKey)) {
+    const std::string model = readString(root.at(kModelKey), file, kModelKey, "\"" + std::string(kWeberPennModel) + "\"");
+    if (model != kWeberPennModel) throw SpeciesError(file, kModelKey, "'" + model + "' is not this model; a species file is \"" + kWeberPennModel + "\"");
+  }
   if (root.contains(kFormatKey)) {
     const std::string fmt = readString(root.at(kFormatKey), file, kFormatKey, "\"arbor-species/1\"");
     if (fmt != kFormatValue) throw SpeciesError(file, kFormatKey, "'" + fmt + "' is not supported; use \"arbor-species/1\"");
@@ -260,6 +248,7 @@ SpeciesParams readSpeciesJson(const std::string& text, const std::string& file) 
 std::string writeSpeciesJson(const SpeciesParams& p) {
   ordered_json root;
   root[kFormatKey] = kFormatValue;
+  root[kModelKey] = kWeberPennModel;
   for (const TreeField& f : treeFields()) {
     switch (f.type) {
       case FieldType::Text: root[f.key] = p.name; break;

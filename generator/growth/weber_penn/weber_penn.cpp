@@ -8,7 +8,7 @@
 #include <string>
 
 #include "natural_rules.hpp"
-#include "random.hpp"
+#include "growth/random.hpp"
 #include "weber_penn_rules.hpp"
 
 namespace arbor {

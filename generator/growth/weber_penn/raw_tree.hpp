@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "math.hpp"
+#include "growth/math.hpp"
 #include "stem_profile.hpp"
 
 namespace arbor {

@@ -158,19 +158,9 @@ TreeEstimate estimateTree(const SpeciesParams& p, int levels) {
     samples = thin(std::move(children));
   }
   e.quads = kQuadsPerNode * e.nodes;
+  e.lowerNodes = "lower Levels, Branches, SegSplits or CurveRes";
+  e.lowerLeaves = "lower Leaves or LeafQuality, or the stems of the deepest level (" + e.drivers + ")";
   return e;
-}
-
-std::string TreeEstimate::excess(const TreeLimits& limits, double margin) const {
-  if (nodes > margin * static_cast<double>(limits.nodes)) {
-    return "the tree would have about " + number(nodes) + " nodes, more than the limit of " + number(static_cast<double>(limits.nodes)) +
-           " (the most stems are on " + drivers + "); lower Levels, Branches, SegSplits or CurveRes";
-  }
-  if (leaves > margin * static_cast<double>(limits.leaves)) {
-    return "the tree would have about " + number(leaves) + " leaves, more than the limit of " + number(static_cast<double>(limits.leaves)) +
-           "; lower Leaves or LeafQuality, or the stems of the deepest level (" + drivers + ")";
-  }
-  return "";
 }
 
 }  // namespace arbor

@@ -1,0 +1,19 @@
+#include "build_tree.hpp"
+
+namespace arbor {
+
+TreeGeometry buildTree(const Skeleton& skeleton, const BuildOptions& options) {
+  TreeGeometry g;
+  const int meshLevels = options.mesh.levels > 0 ? options.mesh.levels : skeleton.levels;
+  MeshOptions mesh = options.mesh;
+  mesh.levels = meshLevels < skeleton.levels ? meshLevels : 0;
+  g.mesh = buildTreeMesh(skeleton, mesh);
+  if (mesh.levels > 0) {
+    g.impostors = impostorSegments(skeleton, meshLevels);
+    g.sketch = sketchSegments(skeleton, meshLevels, skeleton.levels - 1);
+  }
+  if (options.patches) g.patches = buildPatches(g.mesh.mesh);
+  return g;
+}
+
+}  // namespace arbor
