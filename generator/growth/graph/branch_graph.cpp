@@ -249,8 +249,9 @@ class Converter {
   void buildStems() {
     std::vector<PendingStem> queue;
     const std::size_t root = t_.root;
-    if (t_.children[root].size() > 1) {
-      // Several internodes leave the root: they meet in a Root hub, each the start of a trunk.
+    if (needsHub()) {
+      // Several internodes leave the root, or the trunk branches right above it (where a trunk standing on the
+      // ground has no tube yet to connect to): the trunks leave a Root hub.
       SkeletonNode hub;
       hub.kind = NodeKind::Root;
       hub.radius = hub.startRadius = radius_[root];
@@ -268,6 +269,20 @@ class Converter {
     int levels = 0;
     for (const SkeletonStem& s : out_.stems) levels = std::max(levels, s.level + 1);
     out_.levels = levels;
+  }
+
+  bool needsHub() const {
+    const std::size_t root = t_.root;
+    if (t_.children[root].size() > 1) return true;
+    double arc = 0.0;
+    for (std::size_t i = root; next_[i] >= 0;) {
+      const auto c = static_cast<std::size_t>(next_[i]);
+      arc += glm::distance(g_.nodes[c].position, g_.nodes[i].position);
+      if (arc > 2.0 * radius_[root]) return false;
+      if (t_.children[c].size() > 1) return true;
+      i = c;
+    }
+    return false;
   }
 
   // The polyline of a stem in graph nodes: its attach node (if any), then its own nodes to the tip.
@@ -409,8 +424,10 @@ class Converter {
       stem.secondaryAngle = std::acos(std::clamp(glm::dot(firstDir, attach.world.direction()), -1.0, 1.0));
       const std::size_t at = chain[0];
       if (next_[at] >= 0 && p.parentStem >= 0) stem.branchRatio = stem.startRadius / leaving_[static_cast<std::size_t>(next_[at])];
-      stem.stub = endsInsideParent(stem, attach);
-      if (p.parentStem >= 0 && out_.stems[static_cast<std::size_t>(p.parentStem)].stub) stem.stub = true;
+      // The root's heaviest trunk is always meshed (without it there may be no mesh); other trunks ending
+      // inside the hub are stubs like children ending inside their parent.
+      const bool mainTrunk = p.parentStem < 0 && static_cast<std::ptrdiff_t>(p.first) == next_[t_.root];
+      if (!mainTrunk) stem.stub = endsInsideParent(stem, attach) || (p.parentStem >= 0 && out_.stems[static_cast<std::size_t>(p.parentStem)].stub);
     }
 
     // Nodes merged away hang (for leaves) from the last kept node before them; children start new stems.

@@ -59,8 +59,8 @@ std::vector<double> pipeRadii(const BranchGraph& graph, const GraphOptions& opti
 
 // Validates, then converts. At each node the child whose subtree carries the largest pipe-model weight
 // (r^E of its internode: the sum of its tips' r^E) continues the stem, ties (within 1e-9) going to the
-// straightest; the others start new stems one level deeper. A root with several children becomes a Root
-// hub with one trunk per child. `nodeMap`, if given, receives per graph node its skeleton node, or -1 where
+// straightest; the others start new stems one level deeper. A root with several children, or whose trunk
+// branches within two root radii of it, becomes a Root hub with one trunk per child. `nodeMap`, if given, receives per graph node its skeleton node, or -1 where
 // the node was merged away.
 Skeleton graphToSkeleton(const BranchGraph& graph, const GraphOptions& options = {},
                          std::vector<std::int32_t>* nodeMap = nullptr);
