@@ -1,9 +1,13 @@
 #include "skeleton_json.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <limits>
 #include <sstream>
 
 #include "common/json_writer.hpp"
+#include "json_fields.hpp"
 
 namespace arbor {
 
@@ -99,6 +103,193 @@ void writeSkeletonJson(const Skeleton& s, std::ostream& out) {
   w.endArray();
   w.endObject();
   w.flushTo(out);
+}
+
+}  // namespace arbor
+
+// ---- reading ----
+
+namespace arbor {
+
+namespace {
+
+using namespace json_fields;
+
+double ulpStep(double v, int k) {
+  for (; k > 0; --k) v = std::nextafter(v, 1e300);
+  for (; k < 0; ++k) v = std::nextafter(v, -1e300);
+  return v;
+}
+
+int alternating(int i) { return (i + 1) / 2 * (i % 2 ? 1 : -1); }  // 0, 1, -1, 2, -2, ...
+
+// A rotation taking +z to the unit vector d, roll-free where its direction() reads back d bit for bit. The
+// file has no roll, so where it does not, rotations with a small roll are searched for one that does (this
+// finds one for all but about 3 directions in 10,000; those keep the roll-free one, off by an ulp or two).
+Quat rotationTo(const Vec3& d) {
+  const Vec3 z(0.0, 0.0, 1.0);
+  if (d.z < -1.0 + 1e-12) return Quat(0.0, 1.0, 0.0, 0.0);  // a half turn about x
+  const Quat rollFree = glm::normalize(Quat(1.0 + d.z, -d.y, d.x, 0.0));
+  if (rollFree * z == d) return rollFree;
+  // x^2 + y^2 = (1 - d.z) / 2 split unevenly (the smaller part fine-tunes the rounding), then w and the roll
+  // component solved from d.x and d.y and searched ulp by ulp.
+  const double s = 0.5 * (1.0 - d.z);
+  for (int k = 1; k <= 64; ++k) {
+    for (int swap = 0; swap < 2; ++swap) {
+      const double big = std::sqrt(s * (1.0 - 0.001 * k));
+      const double small = std::sqrt(std::max(s - big * big, 0.0));
+      const double x = swap ? small : big, y = swap ? big : small;
+      const double det = x * x + y * y;
+      if (det <= 0.0) continue;
+      const double w = (y * d.x - x * d.y) / (2.0 * det), roll = (x * d.x + y * d.y) / (2.0 * det);
+      for (int a = 0; a <= 8; ++a) {
+        for (int b = 0; b <= 8; ++b) {
+          const Quat q(ulpStep(w, alternating(a)), x, y, ulpStep(roll, alternating(b)));
+          if (q * z == d) return q;
+        }
+      }
+    }
+  }
+  return rollFree;
+}
+
+// The radians whose degrees() is exactly `deg` (the file holds degrees; the skeleton radians).
+double radiansExact(double deg) {
+  const double r = radians(deg);
+  double up = r, down = r;
+  for (int k = 0; k < 8; ++k) {
+    if (degrees(up) == deg) return up;
+    if (degrees(down) == deg) return down;
+    up = std::nextafter(up, 1e300);
+    down = std::nextafter(down, -1e300);
+  }
+  return r;
+}
+
+NodeKind kindNamed(const std::string& name, const std::string& file, const std::string& field) {
+  for (NodeKind k : {NodeKind::Root, NodeKind::Base, NodeKind::Joint, NodeKind::Attachment, NodeKind::Split, NodeKind::Before,
+                     NodeKind::After, NodeKind::Tip}) {
+    if (name == nodeKindName(k)) return k;
+  }
+  throw InputError(file, field, "'" + name + "' is not allowed; use root, base, joint, attachment, split, before, after or tip");
+}
+
+constexpr double kBig = 1e300;
+
+}  // namespace
+
+Skeleton readSkeletonJson(const std::string& text, const std::string& file) {
+  const json doc = parseDocument(text, file, 8);
+  object(doc, file, "(document)");
+  onlyKeys(doc, {"format", "species", "seed", "levels", "treeScale", "treeShapeExponent", "lobes", "lobeDepth", "nodes", "stems", "leaves"},
+           file, "");
+  const std::string format = string(member(doc, "format", file, "", "\"arbor-skeleton/1\""), file, "format");
+  if (format != "arbor-skeleton/1") throw InputError(file, "format", "'" + format + "' is not allowed; use \"arbor-skeleton/1\"");
+  auto num = [&](const json& o, const char* key, const std::string& prefix, double min, double max, const std::string& allowed) {
+    return number(member(o, key, file, prefix, allowed), file, prefix + key, min, max, allowed);
+  };
+  auto whole = [&](const json& o, const char* key, const std::string& prefix, std::int64_t min, std::int64_t max, const std::string& allowed) {
+    return integer(member(o, key, file, prefix, allowed), file, prefix + key, min, max, allowed);
+  };
+  constexpr std::int64_t kMaxCount = std::numeric_limits<std::int32_t>::max();
+
+  Skeleton s;
+  s.species = string(member(doc, "species", file, "", "a string"), file, "species");
+  s.seed = static_cast<std::uint64_t>(whole(doc, "seed", "", std::numeric_limits<std::int64_t>::min(), std::numeric_limits<std::int64_t>::max(),
+                                            "a whole number"));
+  s.levels = static_cast<int>(whole(doc, "levels", "", 0, 1000, "0 to 1000"));
+  s.treeScale = num(doc, "treeScale", "", 0.0, kBig, "a number >= 0");
+  s.exponent = num(doc, "treeShapeExponent", "", 1e-3, 1e3, "a number > 0");
+  s.lobes = static_cast<int>(whole(doc, "lobes", "", 0, 1000, "0 to 1000"));
+  s.lobeDepth = num(doc, "lobeDepth", "", -kBig, kBig, "a finite number");
+
+  const json& nodes = array(member(doc, "nodes", file, "", "an array of nodes"), file, "nodes");
+  const json& stems = array(member(doc, "stems", file, "", "an array of stems"), file, "stems");
+  const json& leaves = array(member(doc, "leaves", file, "", "an array of leaves"), file, "leaves");
+  const auto nodeCount = static_cast<std::int64_t>(nodes.size()), stemCount = static_cast<std::int64_t>(stems.size());
+
+  s.nodes.reserve(nodes.size());
+  for (std::size_t i = 0; i < nodes.size(); ++i) {
+    const std::string at = "nodes[" + std::to_string(i) + "].";
+    const json& n = object(nodes[i], file, at.substr(0, at.size() - 1));
+    onlyKeys(n, {"id", "parent", "stem", "level", "kind", "offset", "position", "direction", "radius", "startRadius"}, file, at);
+    const auto id = static_cast<std::int64_t>(i);
+    whole(n, "id", at, id, id, std::to_string(i) + " (ids are indices into nodes)");
+    SkeletonNode node;
+    node.parent = static_cast<std::int32_t>(whole(n, "parent", at, -1, id - 1, "-1 or the id of an earlier node (parents come first)"));
+    node.stem = static_cast<std::int32_t>(whole(n, "stem", at, -1, stemCount - 1, "-1 or a stem's id"));
+    node.level = static_cast<std::int16_t>(whole(n, "level", at, 0, 1000, "0 to 1000"));
+    node.kind = kindNamed(string(member(n, "kind", file, at, "a node kind"), file, at + "kind"), file, at + "kind");
+    node.offset = num(n, "offset", at, -kBig, kBig, "a finite number");
+    node.radius = num(n, "radius", at, 0.0, kBig, "a radius >= 0");
+    node.startRadius = num(n, "startRadius", at, 0.0, kBig, "a radius >= 0");
+    const Vec3 position = vec3(member(n, "position", file, at, "[x, y, z]"), file, at + "position");
+    const Vec3 direction = vec3(member(n, "direction", file, at, "a unit vector [x, y, z]"), file, at + "direction");
+    if (std::abs(glm::length(direction) - 1.0) > 1e-6) throw InputError(file, at + "direction", "not a unit vector; give one of length 1");
+    node.world = Transform{position, rotationTo(direction)};
+    node.local = node.parent < 0 ? node.world : compose(inverse(s.nodes[static_cast<std::size_t>(node.parent)].world), node.world);
+    s.nodes.push_back(node);
+  }
+
+  s.stems.reserve(stems.size());
+  for (std::size_t i = 0; i < stems.size(); ++i) {
+    const std::string at = "stems[" + std::to_string(i) + "].";
+    const json& st = object(stems[i], file, at.substr(0, at.size() - 1));
+    onlyKeys(st, {"id", "key", "level", "parent", "cloneOf", "attachNode", "firstNode", "nodeCount", "length", "offsetOnParent", "startRadius",
+                  "branchRatio", "secondaryAngle", "primaryDeflection"},
+             file, at);
+    const auto id = static_cast<std::int64_t>(i);
+    whole(st, "id", at, id, id, std::to_string(i) + " (ids are indices into stems)");
+    SkeletonStem stem;
+    const std::string key = string(member(st, "key", file, at, "16 hex digits"), file, at + "key");
+    if (key.size() != 16 || key.find_first_not_of("0123456789abcdef") != std::string::npos) {
+      throw InputError(file, at + "key", "'" + key + "' is not allowed; give 16 lower-case hex digits");
+    }
+    stem.key = std::stoull(key, nullptr, 16);
+    stem.level = static_cast<std::int16_t>(whole(st, "level", at, 0, 1000, "0 to 1000"));
+    stem.parentStem = static_cast<std::int32_t>(whole(st, "parent", at, -1, stemCount - 1, "-1 or a stem's id"));
+    stem.cloneOf = static_cast<std::int32_t>(whole(st, "cloneOf", at, -1, stemCount - 1, "-1 or a stem's id"));
+    if (stem.parentStem == static_cast<std::int32_t>(i) || stem.cloneOf == static_cast<std::int32_t>(i)) {
+      throw InputError(file, at + (stem.cloneOf == static_cast<std::int32_t>(i) ? "cloneOf" : "parent"), "a stem cannot grow from itself");
+    }
+    stem.attachNode = static_cast<std::int32_t>(whole(st, "attachNode", at, -1, nodeCount - 1, "-1 or a node's id"));
+    stem.firstNode = static_cast<std::int32_t>(whole(st, "firstNode", at, 0, nodeCount, "a node's id"));
+    stem.nodeCount = static_cast<std::int32_t>(whole(st, "nodeCount", at, 0, std::min(kMaxCount, nodeCount - stem.firstNode),
+                                                     "0 to the number of nodes from firstNode on"));
+    if (stem.attachNode >= stem.firstNode && stem.nodeCount > 0) {
+      throw InputError(file, at + "attachNode", "not before firstNode; a stem leaves a node that comes before its own");
+    }
+    for (std::int32_t k = stem.firstNode; k < stem.firstNode + stem.nodeCount; ++k) {
+      if (s.nodes[static_cast<std::size_t>(k)].stem != static_cast<std::int32_t>(i)) {
+        throw InputError(file, "nodes[" + std::to_string(k) + "].stem", "not " + std::to_string(i) + ", the stem whose nodes it is among");
+      }
+    }
+    stem.length = num(st, "length", at, 0.0, kBig, "a length >= 0");
+    stem.offsetOnParent = num(st, "offsetOnParent", at, -kBig, kBig, "a finite number");
+    stem.startRadius = num(st, "startRadius", at, 0.0, kBig, "a radius >= 0");
+    stem.branchRatio = num(st, "branchRatio", at, 0.0, kBig, "a number >= 0");
+    stem.secondaryAngle = radiansExact(num(st, "secondaryAngle", at, -360.0, 360.0, "-360 to 360 degrees"));
+    stem.primaryDeflection = radiansExact(num(st, "primaryDeflection", at, -360.0, 360.0, "-360 to 360 degrees"));
+    s.stems.push_back(std::move(stem));
+  }
+
+  s.leaves.reserve(leaves.size());
+  for (std::size_t i = 0; i < leaves.size(); ++i) {
+    const std::string at = "leaves[" + std::to_string(i) + "].";
+    const json& l = object(leaves[i], file, at.substr(0, at.size() - 1));
+    onlyKeys(l, {"stem", "node", "position", "direction", "normal", "length", "width", "kind"}, file, at);
+    Leaf leaf;
+    leaf.stem = static_cast<std::int32_t>(whole(l, "stem", at, 0, stemCount - 1, "a stem's id"));
+    leaf.node = static_cast<std::int32_t>(whole(l, "node", at, 0, nodeCount - 1, "a node's id"));
+    leaf.position = vec3(member(l, "position", file, at, "[x, y, z]"), file, at + "position");
+    leaf.direction = vec3(member(l, "direction", file, at, "[x, y, z]"), file, at + "direction");
+    leaf.normal = vec3(member(l, "normal", file, at, "[x, y, z]"), file, at + "normal");
+    leaf.length = num(l, "length", at, 0.0, kBig, "a length >= 0");
+    leaf.width = num(l, "width", at, 0.0, kBig, "a width >= 0");
+    leaf.kind = static_cast<std::uint8_t>(whole(l, "kind", at, 0, 3, "0 (broad), 1 (narrow), 2 (frond) or 3 (needle)"));
+    s.leaves.push_back(leaf);
+  }
+  return s;
 }
 
 }  // namespace arbor

@@ -1,0 +1,398 @@
+// Branch graphs (other growth models) -> skeletons: the pipe rule at every branch point, the continuation by
+// pipe-model weight, smoothing and merging that keep branch points, refusals naming the node, the JSON
+// formats read back byte for byte, and random graphs meshing to closed all-quad 2-manifolds.
+#include <catch2/catch.hpp>
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <map>
+#include <sstream>
+#include <nlohmann/json.hpp>
+
+#include "growth/graph/branch_graph.hpp"
+#include "growth/graph/graph_json.hpp"
+#include "growth/graph/random_graph.hpp"
+#include "growth/skeleton_checks.hpp"
+#include "growth/skeleton_json.hpp"
+#include "growth/weber_penn/weber_penn.hpp"
+#include "mesh/mesh_checks.hpp"
+#include "mesh/osd_topology.hpp"
+#include "mesh/tree_mesh.hpp"
+#include "patches/acc.hpp"
+#include "patches/patch_set.hpp"
+#include "test_support.hpp"
+
+using namespace arbor;
+
+namespace {
+
+BranchNode at(double x, double y, double z, int parent, double radius = 0.0) {
+  BranchNode n;
+  n.position = Vec3(x, y, z);
+  n.parent = parent;
+  n.radius = radius;
+  return n;
+}
+
+GraphOptions unmerged() {
+  GraphOptions o;
+  o.minSegment = 0.0;
+  o.maxSegment = 0.0;
+  return o;
+}
+
+std::vector<int> childCounts(const BranchGraph& g) {
+  std::vector<int> count(g.nodes.size(), 0);
+  for (const BranchNode& n : g.nodes)
+    if (n.parent >= 0) ++count[static_cast<std::size_t>(n.parent)];
+  return count;
+}
+
+// The message of the InputError `work` throws ("" if none).
+template <class Work>
+std::string refusal(Work&& work) {
+  try {
+    work();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// What a graph's conversion and mesh must hold; the first thing that fails, or "" when all hold.
+std::string meshProblem(const BranchGraph& g, bool osd, std::size_t& degenerate) {
+  const Skeleton s = graphToSkeleton(g);
+  if (!structuralProblems(s).empty()) return "skeleton: " + structuralProblems(s).front();
+  TreeMesh tree;
+  try {
+    tree = buildTreeMesh(s);
+  } catch (const std::exception& e) {
+    return std::string("mesher threw: ") + e.what();
+  }
+  const MeshTopologyReport r = checkTopology(tree.mesh);
+  std::ostringstream out;
+  if (tree.mesh.quads.empty()) out << "no quads; ";
+  if (r.boundaryEdges) out << r.boundaryEdges << " boundary edges; ";
+  if (r.nonManifoldEdges) out << r.nonManifoldEdges << " non-manifold edges; ";
+  if (r.misorientedEdges) out << r.misorientedEdges << " misoriented edges; ";
+  if (r.nonManifoldVertices) out << r.nonManifoldVertices << " non-manifold vertices; ";
+  degenerate = r.degenerateFaces;
+  if (r.components != 1) out << r.components << " components; ";
+  if (r.eulerCharacteristic != 2) out << "Euler characteristic " << r.eulerCharacteristic << "; ";
+  if (!(r.signedVolume > 0.0)) out << "signed volume " << r.signedVolume << "; ";
+  if (r.minValence < 3 || r.maxValence > 6) out << "valences " << r.minValence << ".." << r.maxValence << "; ";
+  const PatchSet set = buildPatches(tree.mesh);
+  std::size_t fallback = 0, large = 0;
+  for (std::size_t p = 0; p < set.size(); ++p) {
+    fallback += set.kind[p] == PatchKind::Fallback ? 1 : 0;
+    large += set.pointCount(p) > static_cast<std::size_t>(kMaxPatchPoints) ? 1 : 0;
+  }
+  if (fallback) out << fallback << " fallback patches; ";
+  if (large) out << large << " patches over 32 points; ";
+  if (osd && out.str().empty()) {
+    try {
+      makeTopologyRefiner(tree.mesh, "graph");
+    } catch (const std::exception& e) {
+      out << "OpenSubdiv: " << e.what() << "; ";
+    }
+  }
+  return out.str();
+}
+
+}  // namespace
+
+TEST_CASE("the pipe rule holds at every branch point and radii never shrink toward the root", "[graph]") {
+  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+    INFO("seed " << seed);
+    const BranchGraph g = randomBranchGraph(seed, 400);
+    const Skeleton s = graphToSkeleton(g);
+    CHECK(structuralProblems(s).empty());
+    CHECK(worstConservationError(s) < 1e-9);
+    std::size_t branchPoints = 0;
+    std::vector<int> outgoing(s.nodes.size(), 0);
+    for (const SkeletonNode& n : s.nodes) {
+      if (n.parent < 0) continue;
+      ++outgoing[static_cast<std::size_t>(n.parent)];
+      const SkeletonNode& p = s.nodes[static_cast<std::size_t>(n.parent)];
+      CHECK(n.startRadius >= n.radius * (1.0 - 1e-12));  // an internode tapers toward its tip
+      CHECK(p.radius >= n.startRadius * (1.0 - 1e-12));  // and is never wider than the node it leaves
+    }
+    for (int o : outgoing) branchPoints += o > 1 ? 1 : 0;
+    CHECK(branchPoints > 20);
+    // Tips without a given radius have the tip radius.
+    for (const SkeletonNode& n : s.nodes) {
+      if (n.kind == NodeKind::Tip) CHECK(n.radius >= GraphOptions{}.tipRadius * (1.0 - 1e-12));
+    }
+  }
+  // Pipe radii from the tips alone: r^E of a node is the sum over the tips below it.
+  BranchGraph g;
+  g.nodes = {at(0, 0, 0, -1), at(0, 0, 1, 0), at(1, 0, 2, 1), at(-1, 0, 2, 1), at(0, 1, 2, 1), at(2, 0, 3, 2)};
+  const GraphOptions o;
+  const auto r = pipeRadii(g, o);
+  CHECK(std::pow(r[1], o.exponent) == Approx(3.0 * std::pow(o.tipRadius, o.exponent)).epsilon(1e-12));
+  CHECK(r[0] == Approx(r[1]).epsilon(1e-15));
+  CHECK(r[2] == Approx(o.tipRadius).epsilon(1e-15));
+}
+
+TEST_CASE("the heaviest child continues the stem, ties going to the straightest", "[graph]") {
+  // Node 1 branches: child 2 carries two tips (heavier) at 60 degrees, child 5 one tip straight on.
+  BranchGraph g;
+  g.nodes = {at(0, 0, 0, -1), at(0, 0, 1, 0),     at(0.87, 0, 1.5, 1), at(1.5, 0, 2, 2),
+             at(1.2, 0.5, 2, 2), at(0, 0, 2, 1)};
+  std::vector<std::int32_t> map;
+  Skeleton s = graphToSkeleton(g, unmerged(), &map);
+  auto stemOf = [&](std::size_t i) { return s.nodes[static_cast<std::size_t>(map[i])].stem; };
+  CHECK(stemOf(2) == stemOf(1));
+  CHECK(stemOf(5) != stemOf(1));
+  CHECK(s.stems[static_cast<std::size_t>(stemOf(5))].level == 1);
+  CHECK(s.stems[static_cast<std::size_t>(stemOf(5))].attachNode == map[1]);
+  CHECK(s.nodes[static_cast<std::size_t>(map[1])].kind == NodeKind::Attachment);
+
+  // Equal weights (one tip each): the child at the smaller angle to the incoming internode continues.
+  g.nodes = {at(0, 0, 0, -1), at(0, 0, 1, 0), at(1, 0, 1.5, 1), at(0.2, 0, 2, 1), at(-1, 0, 2, 1)};
+  s = graphToSkeleton(g, unmerged(), &map);
+  CHECK(stemOf(3) == stemOf(1));
+  CHECK(stemOf(2) != stemOf(1));
+  CHECK(stemOf(4) != stemOf(1));
+  CHECK(s.levels == 2);
+
+  // A given radius makes a light-looking child the heavier one.
+  g.nodes = {at(0, 0, 0, -1), at(0, 0, 1, 0), at(1, 0, 1.5, 1, 0.05), at(0, 0, 2, 1)};
+  s = graphToSkeleton(g, unmerged(), &map);
+  CHECK(stemOf(2) == stemOf(1));
+}
+
+TEST_CASE("a root with several children becomes a hub of trunks", "[graph]") {
+  BranchGraph g;
+  g.nodes = {at(0, 0, 0, -1), at(0, 0, 1, 0), at(0.5, 0, 0.8, 0), at(-0.5, 0.2, 0.8, 0)};
+  const Skeleton s = graphToSkeleton(g);
+  REQUIRE(s.nodes[0].kind == NodeKind::Root);
+  CHECK(s.stems.size() == 3);
+  for (const SkeletonStem& st : s.stems) {
+    CHECK(st.level == 0);
+    CHECK(st.attachNode == 0);
+  }
+  CHECK(worstConservationError(s) < 1e-12);
+  const MeshTopologyReport r = checkTopology(buildTreeMesh(s).mesh);
+  CHECK(r.boundaryEdges == 0);
+  CHECK(r.eulerCharacteristic == 2);
+}
+
+TEST_CASE("smoothing moves no branch point, tip or root, and does move the rest", "[graph]") {
+  GraphOptions o = unmerged();
+  o.smoothingPasses = 5;
+  std::size_t moved = 0;
+  for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+    const BranchGraph g = randomBranchGraph(seed, 300);
+    std::vector<std::int32_t> map;
+    const Skeleton s = graphToSkeleton(g, o, &map);
+    const auto children = childCounts(g);
+    for (std::size_t i = 0; i < g.nodes.size(); ++i) {
+      REQUIRE(map[i] >= 0);  // nothing merged
+      const Vec3 p = s.nodes[static_cast<std::size_t>(map[i])].world.position;
+      if (children[i] != 1) CHECK(p == g.nodes[i].position);
+      else moved += p != g.nodes[i].position ? 1 : 0;
+    }
+    CHECK(worstConservationError(s) < 1e-9);
+  }
+  CHECK(moved > 500);
+}
+
+TEST_CASE("merging keeps every branch point and tip and leaves segments of at least a radius", "[graph]") {
+  std::size_t edges = 0, shortIntoFixed = 0, dropped = 0, before = 0;
+  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+    const BranchGraph g = randomBranchGraph(seed, 400);
+    std::vector<std::int32_t> map;
+    const Skeleton s = graphToSkeleton(g, GraphOptions{}, &map);
+    const auto children = childCounts(g);
+    for (std::size_t i = 0; i < g.nodes.size(); ++i) {
+      if (children[i] != 1) CHECK(map[i] >= 0);
+      dropped += map[i] < 0 ? 1 : 0;
+    }
+    before += g.nodes.size();
+    for (const SkeletonNode& n : s.nodes) {
+      if (n.parent < 0) continue;
+      const SkeletonNode& p = s.nodes[static_cast<std::size_t>(n.parent)];
+      const double length = glm::distance(n.world.position, p.world.position);
+      ++edges;
+      // A segment ends at a free node only once it is a radius long; into a branch point or tip it may be
+      // shorter where the graph itself is (two branch points closer than a radius).
+      if (n.kind == NodeKind::Joint) CHECK(length >= n.startRadius * (1.0 - 1e-12));
+      else if (length < n.startRadius && p.kind == NodeKind::Joint) ++shortIntoFixed;
+    }
+    CHECK(worstConservationError(s) < 1e-9);
+  }
+  INFO("dropped " << dropped << " of " << before << " nodes; " << shortIntoFixed << " of " << edges << " edges shorter than a radius run from a free node into a fixed one");
+  CHECK(dropped > before / 5);
+  CHECK(shortIntoFixed * 100 < edges);
+
+  // A straight run of 1,000 internodes of a twentieth of a radius becomes segments of about two radii.
+  BranchGraph chain;
+  chain.nodes.push_back(at(0, 0, 0, -1));
+  const double r = GraphOptions{}.tipRadius;
+  for (int i = 1; i <= 1000; ++i) chain.nodes.push_back(at(0, 0, 0.05 * r * i, i - 1));
+  const Skeleton s = graphToSkeleton(chain);
+  CHECK(s.nodes.size() >= 25);
+  CHECK(s.nodes.size() <= 27);
+}
+
+TEST_CASE("graphs that are no tree are refused, naming the node and what is allowed", "[graph][refusals]") {
+  auto base = [] {
+    BranchGraph g;
+    g.nodes = {at(0, 0, 0, -1), at(0, 0, 1, 0), at(0, 1, 2, 1), at(1, 0, 2, 1)};
+    for (std::size_t i = 0; i < g.nodes.size(); ++i) g.nodes[i].id = static_cast<std::int64_t>(10 + i);
+    return g;
+  };
+  auto refused = [](const BranchGraph& g) { return refusal([&] { graphToSkeleton(g); }); };
+  BranchGraph g = base();
+  g.nodes[2].parent = -1;
+  CHECK_THAT(refused(g), Catch::Contains("nodes[id 12].parent") && Catch::Contains("second root") && Catch::Contains("exactly one"));
+  g = base();
+  g.nodes[3].parent = 17;
+  CHECK_THAT(refused(g), Catch::Contains("nodes[id 13].parent") && Catch::Contains("unknown parent"));
+  g = base();
+  g.nodes[1].parent = 3;  // 11 -> 13 -> 11
+  CHECK_THAT(refused(g), Catch::Contains("cycle") && (Catch::Contains("id 11") || Catch::Contains("id 13")));
+  g = base();
+  g.nodes[3].position = g.nodes[1].position;
+  CHECK_THAT(refused(g), Catch::Contains("nodes[id 13].position") && Catch::Contains("length 0"));
+  g = base();
+  g.nodes[2].position.y = std::nan("");
+  CHECK_THAT(refused(g), Catch::Contains("nodes[id 12].position") && Catch::Contains("finite"));
+  g = base();
+  g.nodes[2].radius = std::numeric_limits<double>::infinity();
+  CHECK_THAT(refused(g), Catch::Contains("nodes[id 12].radius"));
+  g = base();
+  g.nodes.resize(1);
+  CHECK_THAT(refused(g), Catch::Contains("at least two nodes"));
+  g = base();
+  for (BranchNode& n : g.nodes) n.parent = n.parent < 0 ? 1 : n.parent;
+  CHECK_THAT(refused(g), Catch::Contains("no root") || Catch::Contains("cycle"));
+
+  // The same through the file format, which also names the file.
+  auto read = [](const std::string& text) { return refusal([&] { readBranchGraphJson(text, "tree.json"); }); };
+  const std::string head = R"({"format":"arbor-graph/1","nodes":[{"id":4,"parent":-1,"position":[0,0,0]},)";
+  CHECK(read(head + R"({"id":5,"parent":4,"position":[0,0,1]}]})").empty());
+  CHECK_THAT(read(head + R"({"id":4,"parent":4,"position":[0,0,1]}]})"),
+             Catch::StartsWith("tree.json: ") && Catch::Contains("id 4 is given twice"));
+  CHECK_THAT(read(head + R"({"id":5,"parent":-1,"position":[0,0,1]}]})"), Catch::Contains("nodes[id 5].parent") && Catch::Contains("second root"));
+  CHECK_THAT(read(head + R"({"id":5,"parent":9,"position":[0,0,1]}]})"), Catch::Contains("nodes[id 5].parent") && Catch::Contains("unknown parent 9"));
+  CHECK_THAT(read(head + R"({"id":5,"parent":6,"position":[0,0,1]},{"id":6,"parent":5,"position":[0,1,1]}]})"), Catch::Contains("cycle"));
+  CHECK_THAT(read(head + R"({"id":5,"parent":4,"position":[0,0,0]}]})"), Catch::Contains("nodes[id 5].position") && Catch::Contains("length 0"));
+  CHECK_THAT(read(head + R"({"id":5,"parent":4,"position":[0,NaN,1]}]})"), Catch::StartsWith("tree.json: ") && Catch::Contains("NaN"));
+  CHECK_THAT(read(head + R"({"id":5,"parent":4,"position":[0,1e999,1]}]})"), Catch::StartsWith("tree.json: "));
+  CHECK_THAT(read(head + R"({"id":5,"parent":4,"position":[0,0]}]})"), Catch::Contains("nodes[id 5].position") && Catch::Contains("[x, y, z]"));
+  CHECK_THAT(read(head + R"({"id":5.5,"parent":4,"position":[0,0,1]}]})"), Catch::Contains("nodes[1].id") && Catch::Contains("whole number"));
+  CHECK_THAT(read(head + R"({"id":5,"parent":4,"position":[0,0,1],"radius":"big"}]})"), Catch::Contains("nodes[id 5].radius"));
+  CHECK_THAT(read(head + R"({"id":5,"parent":4,"position":[0,0,1],"radus":1}]})"), Catch::Contains("nodes[1].radus") && Catch::Contains("radius"));
+  CHECK_THAT(read(R"({"format":"arbor-graph/2","nodes":[]})"), Catch::Contains("'format'") && Catch::Contains("arbor-graph/1"));
+  CHECK_THAT(read(head + R"({"id":5,"parent":4,"position":[0,0,1]}],"leaves":[{"node":8,"direction":[1,0,0],"length":1,"width":1}]})"),
+             Catch::Contains("leaves[0].node") && Catch::Contains("unknown node 8"));
+}
+
+TEST_CASE("graph files read back as written, leaves hang from the nodes kept", "[graph][json]") {
+  const BranchGraph g = randomBranchGraph(7, 500);
+  REQUIRE(!g.leaves.empty());
+  const std::string text = writeBranchGraphJson(g);
+  const BranchGraph back = readBranchGraphJson(text, "graph.json");
+  CHECK(writeBranchGraphJson(back) == text);
+  CHECK(writeSkeletonJson(graphToSkeleton(back)) == writeSkeletonJson(graphToSkeleton(g)));
+  const Skeleton s = graphToSkeleton(g);
+  REQUIRE(s.leaves.size() == g.leaves.size());
+  for (const Leaf& l : s.leaves) {
+    REQUIRE(l.node >= 0);
+    CHECK(s.nodes[static_cast<std::size_t>(l.node)].stem == l.stem);
+    CHECK(l.normal.z >= 0.0);
+    CHECK(std::abs(glm::dot(l.normal, l.direction)) < 1e-9);
+  }
+}
+
+TEST_CASE("every preset's skeleton reads back from JSON and writes the same values", "[graph][json]") {
+  // Every value is written back bit for bit except, rarely, a node's direction: the file has no roll, and for
+  // about 3 directions in 10,000 no rotation readSkeletonJson tries gives glm's q * z exactly (off by an ulp).
+  std::size_t nodes = 0, inexact = 0, identicalFiles = 0;
+  for (const std::string& name : test::presetNames()) {
+    INFO(name);
+    GrowthOptions o;
+    o.seed = 3;
+    const Skeleton s = generateSkeleton(test::loadPreset(name), o);
+    const std::string text = writeSkeletonJson(s);
+    const Skeleton back = readSkeletonJson(text, name + ".json");
+    const std::string again = writeSkeletonJson(back);
+    identicalFiles += again == text ? 1 : 0;
+    nlohmann::json a = nlohmann::json::parse(text), b = nlohmann::json::parse(again);
+    REQUIRE(a["nodes"].size() == b["nodes"].size());
+    for (std::size_t i = 0; i < a["nodes"].size(); ++i) {
+      nlohmann::json& na = a["nodes"][i];
+      nlohmann::json& nb = b["nodes"][i];
+      const Vec3 da(na["direction"][0].get<double>(), na["direction"][1].get<double>(), na["direction"][2].get<double>());
+      const Vec3 db(nb["direction"][0].get<double>(), nb["direction"][1].get<double>(), nb["direction"][2].get<double>());
+      CHECK(glm::distance(da, db) < 1e-12);
+      inexact += da != db ? 1 : 0;
+      na.erase("direction");
+      nb.erase("direction");
+    }
+    nodes += a["nodes"].size();
+    CHECK(a == b);  // everything else exactly
+    double worst = 0.0;  // local transforms compose back to the world positions
+    for (std::size_t i = 0; i < back.nodes.size(); ++i) {
+      const SkeletonNode& n = back.nodes[i];
+      if (n.parent < 0) continue;
+      const Transform w = compose(back.nodes[static_cast<std::size_t>(n.parent)].world, n.local);
+      worst = std::max(worst, glm::distance(w.position, n.world.position) / s.treeScale);
+    }
+    CHECK(worst < 1e-12);
+  }
+  WARN(identicalFiles << " of " << test::presetNames().size() << " preset files byte-identical; " << inexact << " of " << nodes
+                      << " node directions off by an ulp or two");
+  CHECK(inexact * 1000 < nodes);
+  // A converted graph's skeleton reads back too.
+  const std::string text = writeSkeletonJson(graphToSkeleton(randomBranchGraph(5, 300)));
+  CHECK(writeSkeletonJson(readSkeletonJson(text, "g.json")).size() == text.size());
+}
+
+TEST_CASE("bad skeleton files are refused naming the file and field", "[graph][json][refusals]") {
+  BranchGraph g;
+  g.nodes = {at(0, 0, 0, -1), at(0, 0, 1, 0), at(0, 0.5, 1.5, 1), at(0, 0, 2, 1)};
+  const std::string good = writeSkeletonJson(graphToSkeleton(g));
+  auto read = [](const std::string& text) { return refusal([&] { readSkeletonJson(text, "s.json"); }); };
+  CHECK(read(good).empty());
+  auto replaced = [&](const std::string& from, const std::string& to) {
+    std::string t = good;
+    const auto at = t.find(from);
+    REQUIRE(at != std::string::npos);
+    t.replace(at, from.size(), to);
+    return t;
+  };
+  CHECK_THAT(read(replaced("\"kind\": \"base\"", "\"kind\": \"trunk\"")), Catch::Contains("nodes[0].kind") && Catch::Contains("tip"));
+  CHECK_THAT(read(replaced("\"parent\": 0", "\"parent\": 7")), Catch::Contains("nodes[1].parent") && Catch::Contains("earlier node"));
+  CHECK_THAT(read(replaced("\"radius\": ", "\"radius\": -")), Catch::Contains("nodes[0].radius") && Catch::Contains(">= 0"));
+  CHECK_THAT(read(replaced("arbor-skeleton/1", "arbor-skeleton/9")), Catch::Contains("'format'"));
+  CHECK_THAT(read(replaced("\"firstNode\": 0", "\"firstNode\": 1")), Catch::StartsWith("s.json: "));
+  CHECK_THAT(read(good.substr(0, good.size() / 2)), Catch::StartsWith("s.json: ") && Catch::Contains("invalid JSON"));
+}
+
+TEST_CASE("1,000 random graphs of 400 internodes mesh to closed, outward, all-quad 2-manifolds within 32-point patches", "[graph][mesh]") {
+  const auto start = std::chrono::steady_clock::now();
+  std::vector<std::string> failures;
+  std::vector<std::uint64_t> slivers;
+  for (std::uint64_t seed = 1; seed <= 1000; ++seed) {
+    const BranchGraph g = randomBranchGraph(seed, 400);
+    std::size_t degenerate = 0;
+    const std::string problem = meshProblem(g, seed % 10 == 0, degenerate);
+    if (!problem.empty()) failures.push_back("seed " + std::to_string(seed) + ": " + problem);
+    if (degenerate) slivers.push_back(seed);
+  }
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::string list;
+  for (std::size_t i = 0; i < std::min<std::size_t>(failures.size(), 30); ++i) list += failures[i] + "\n";
+  INFO(failures.size() << " of 1000 failed in " << seconds << " s:\n" << list);
+  CHECK(failures.empty());
+  // Known mesher limit (docs/graph-format.md): where a stem's tube begins at or past its end (a trunk leaving
+  // the root hub along its axis, children attached before the tube), two cross sections nearly coincide and a
+  // band of four sliver quads (area < 1e-4 of its edge squared) remains: 20 of these 1,000 graphs when measured.
+  std::string seeds;
+  for (std::uint64_t s : slivers) seeds += std::to_string(s) + " ";
+  INFO("graphs with sliver quads: " << seeds);
+  CHECK(slivers.size() <= 20);
+}
