@@ -76,6 +76,47 @@ TEST_CASE("species --list names the growth models and each preset's model; a fil
   CHECK_FALSE(fs::exists(arbor::test::tempPath("o.json")));
 }
 
+TEST_CASE("mesh takes a branch graph or a skeleton file; a skeleton meshes exactly as the tree it was written from", "[cli][graph]") {
+  // A trunk of five internodes, then a node with four children (one nearly along the trunk, one backward).
+  nlohmann::json doc = {{"format", "arbor-graph/1"}, {"nodes", nlohmann::json::array()}};
+  auto add = [&](int parent, double x, double y, double z) {
+    const int id = static_cast<int>(doc["nodes"].size());
+    doc["nodes"].push_back({{"id", id}, {"parent", parent}, {"position", {x, y, z}}});
+    return id;
+  };
+  int top = add(-1, 0, 0, 0);
+  for (int k = 1; k <= 5; ++k) top = add(top, 0, 0, 0.5 * k);
+  for (const auto& d : {glm::dvec3(0.3, 0, 0.1), glm::dvec3(0, 0.3, 0.1), glm::dvec3(0.02, 0, 0.3), glm::dvec3(-0.2, -0.2, -0.15)}) {
+    int parent = top;
+    for (int k = 1; k <= 6; ++k) parent = add(parent, k * d.x, k * d.y, 2.5 + k * d.z);
+  }
+  const std::string file = writeTemp("fan-graph.json", doc.dump());
+  const std::string obj = arbor::test::tempPath("fan.obj");
+  const Result r = run("mesh " + file + " --out " + obj);
+  CHECK(r.exitCode == 0);
+  CHECK_THAT(r.output, Catch::Contains("closed 2-manifold, 1 piece(s)") && Catch::Contains("from its file"));
+  CHECK(fs::file_size(obj) > 1000);
+  const Result check = run("check " + file);
+  CHECK(check.exitCode == 0);  // no mesh-made crossings at this fan
+
+  // A node named twice, and a cycle: refused naming the node.
+  doc["nodes"][3]["parent"] = 5;
+  const Result cycle = run("mesh " + writeTemp("cycle-graph.json", doc.dump()) + " --out " + arbor::test::tempPath("c.obj"));
+  CHECK(cycle.exitCode == 2);
+  CHECK_THAT(cycle.output, Catch::Contains("cycle-graph.json") && Catch::Contains("3"));
+  CHECK_FALSE(fs::exists(arbor::test::tempPath("c.obj")));
+
+  const std::string skeleton = arbor::test::tempPath("palm-skeleton.json"), direct = arbor::test::tempPath("palm-direct.obj"),
+                    again = arbor::test::tempPath("palm-again.obj");
+  REQUIRE(run("generate palm --seed 2 --quiet --out " + skeleton).exitCode == 0);
+  REQUIRE(run("generate palm --seed 2 --quiet --out " + direct).exitCode == 0);
+  REQUIRE(run("mesh " + skeleton + " --quiet --out " + again).exitCode == 0);
+  CHECK(arbor::readFile(direct) == arbor::readFile(again));
+  const Result species = run("species " + skeleton);
+  CHECK(species.exitCode == 2);
+  CHECK_THAT(species.output, Catch::Contains("not a model file"));
+}
+
 TEST_CASE("unknown presets list the presets on offer", "[cli]") {
   const Result r = run("generate no-such-tree --out " + arbor::test::tempPath("n.json"));
   CHECK(r.exitCode == 2);

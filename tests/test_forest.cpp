@@ -38,7 +38,7 @@ ForestTreesOptions forestOf(const std::vector<std::string>& presets, std::uint32
   for (const std::string& name : presets) {
     SpeciesParams p = test::loadPreset(name);
     p.levels = std::min(p.levels, maxLevels);
-    o.models.push_back(weberPennModel(p));
+    o.sources.emplace_back(weberPennModel(p));
   }
   o.trees = trees;
   o.seeds = seeds;

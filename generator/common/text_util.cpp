@@ -88,4 +88,29 @@ std::size_t jsonNestingPast(const std::string& text, int maxDepth) {
   return std::string::npos;
 }
 
+std::string topLevelJsonString(const std::string& text, const std::string& key) {
+  int depth = 0;
+  bool expectValue = false;  // the last token at depth 1 was `key` and its colon
+  std::string last;          // the last string read at depth 1
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (c == '"') {
+      std::size_t j = i + 1;
+      while (j < text.size() && text[j] != '"') j += text[j] == '\\' ? 2 : 1;
+      if (j >= text.size()) return "";
+      const std::string value = text.substr(i + 1, j - i - 1);
+      if (depth == 1 && expectValue) return value;
+      if (depth == 1) last = value;
+      i = j;
+      continue;
+    }
+    if (c == '{' || c == '[') ++depth;
+    else if (c == '}' || c == ']') --depth;
+    else if (c == ':' && depth == 1) expectValue = last == key;
+    else if (c == ',' && depth == 1) expectValue = false, last.clear();
+    if (depth != 1) expectValue = false;
+  }
+  return "";
+}
+
 }  // namespace arbor

@@ -20,4 +20,8 @@ std::string lastJsonKeyBefore(const std::string& text, std::size_t at);
 // before a recursive parser meets it.
 std::size_t jsonNestingPast(const std::string& text, int maxDepth);
 
+// The string value of `key` in the outermost JSON object of `text` (escapes left as written), found by one
+// scan without parsing; "" when it has none. Enough to tell file kinds apart before choosing a reader.
+std::string topLevelJsonString(const std::string& text, const std::string& key);
+
 }  // namespace arbor

@@ -49,6 +49,9 @@ std::span<const GrowthModelInfo> growthModels() { return kModels; }
 TreeModel readModelFile(const std::string& text, const std::string& file, const ModelReadOptions& options) {
   requireModelExtension(file);
   const bool xml = endsWith(file, ".xml");
+  if (const std::string format = xml ? "" : topLevelJsonString(text, "format"); format == "arbor-skeleton/1" || format == "arbor-graph/1") {
+    throw InputError(file, "format", "'" + format + "' is a tree already grown, not a model file; 'arbor mesh', 'render' and 'view' take it");
+  }
   const std::string name = xml ? "" : namedModel(text, file);
   for (const GrowthModelInfo& m : kModels) {
     if (name == m.name) return m.read(text, file, xml, options);

@@ -8,9 +8,15 @@ namespace arbor {
 
 std::vector<DetailedTree> growForestTrees(const ForestTreesOptions& options, const std::function<void(const std::string&)>& progress) {
   std::vector<DetailedTree> out;
-  if (options.models.empty()) return out;
-  const auto models = static_cast<std::uint32_t>(options.models.size());
-  const std::uint32_t distinct = std::min({models * std::max(1u, options.seeds), std::max(1u, options.trees), options.maxDistinct});
+  // (source, seed) of each distinct tree: every source once, then the growth models again with the next seeds.
+  std::vector<std::pair<std::size_t, std::uint64_t>> kinds;
+  for (std::uint32_t round = 0; round < std::max(1u, options.seeds); ++round) {
+    for (std::size_t m = 0; m < options.sources.size(); ++m) {
+      if (round == 0 || options.sources[m].model()) kinds.emplace_back(m, options.seed + round);
+    }
+  }
+  const auto distinct = static_cast<std::uint32_t>(std::min<std::size_t>({kinds.size(), std::max(1u, options.trees), options.maxDistinct}));
+  kinds.resize(distinct);
   // Each detail meshes fewer levels than the one before; all together hold at most `details` full meshes.
   const auto tooMany = [&](double quads) {
     return LimitError("the forest's " + std::to_string(distinct) + " distinct trees would hold about " + std::to_string(static_cast<long long>(quads)) +
@@ -18,18 +24,17 @@ std::vector<DetailedTree> growForestTrees(const ForestTreesOptions& options, con
                       "; give fewer species or --seeds, or lower Levels");
   };
   double estimated = 0.0;
-  for (std::uint32_t t = 0; t < distinct; ++t) estimated += options.models[t % models].estimate().quads;
+  for (const auto& [m, seed] : kinds) estimated += options.sources[m].estimate().quads;
   if (estimated > static_cast<double>(options.maxQuads)) throw tooMany(estimated);
   std::size_t quads = 0;
   for (std::uint32_t t = 0; t < distinct; ++t) {
-    const std::size_t m = t % models;
-    const std::uint64_t seed = options.seed + t / models;
+    const auto [m, seed] = kinds[t];
     DetailedTree tree;
     tree.label = options.labels[m] + " #" + std::to_string(seed);
     progress("growing " + tree.label + " (" + std::to_string(t + 1) + "/" + std::to_string(distinct) + ")");
     GrowthOptions growth;
     growth.seed = seed;
-    const Skeleton skeleton = options.models[m].grow(growth);
+    const Skeleton skeleton = options.sources[m].grow(growth);
     for (int d = 0; d < options.details; ++d) {
       // The deepest d levels as fake branches over a mesh of the others (one skeleton: the same tree).
       BuildOptions build;

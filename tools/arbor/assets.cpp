@@ -47,15 +47,35 @@ void addAnglesOption(CLI::App* cmd, AngleChoice& angles) {
           "natural|file"));
 }
 
+namespace {
+
+// A preset's file, or "" when the argument names none.
+std::string presetFile(const std::string& name) {
+  const fs::path preset = fs::path(assetDirectory()) / "presets" / (name + ".json");
+  std::error_code ec;
+  return name.find('/') == std::string::npos && fs::is_regular_file(preset, ec) ? preset.string() : "";
+}
+
+[[noreturn]] void neitherFileNorPreset(const std::string& argument, const std::string& files) {
+  std::string list;
+  for (const std::string& name : presetNames()) list += (list.empty() ? "" : ", ") + name;
+  throw InputError(argument, "(argument)", "is neither " + files + " nor a preset; presets: " + list);
+}
+
+}  // namespace
+
 TreeModel loadModelArgument(const std::string& presetOrFile, ImportNotes* notes, AngleChoice angles) {
   const ModelReadOptions options{angles == AngleChoice::Natural, notes};
   if (inputExists(presetOrFile)) return loadModelFile(presetOrFile, options);
-  const fs::path preset = fs::path(assetDirectory()) / "presets" / (presetOrFile + ".json");
-  std::error_code ec;
-  if (presetOrFile.find('/') == std::string::npos && fs::is_regular_file(preset, ec)) return loadModelFile(preset.string(), options);
-  std::string list;
-  for (const std::string& name : presetNames()) list += (list.empty() ? "" : ", ") + name;
-  throw InputError(presetOrFile, "(argument)", "is neither a model file (.json, .xml) nor a preset; presets: " + list);
+  if (const std::string preset = presetFile(presetOrFile); !preset.empty()) return loadModelFile(preset, options);
+  neitherFileNorPreset(presetOrFile, "a model file (.json, .xml)");
+}
+
+TreeSource loadTreeArgument(const std::string& presetOrFile, ImportNotes* notes, AngleChoice angles) {
+  const ModelReadOptions options{angles == AngleChoice::Natural, notes};
+  if (inputExists(presetOrFile)) return loadTreeSource(presetOrFile, options);
+  if (const std::string preset = presetFile(presetOrFile); !preset.empty()) return TreeSource(loadModelFile(preset, options));
+  neitherFileNorPreset(presetOrFile, "a model, skeleton or graph file (.json, .xml)");
 }
 
 }  // namespace arbor::cli

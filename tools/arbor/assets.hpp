@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "growth/growth_model.hpp"
+#include "tree/tree_source.hpp"
 
 namespace arbor::cli {
 
@@ -23,5 +24,8 @@ void addAnglesOption(CLI::App* cmd, AngleChoice& angles);
 // A path that exists is read as a model file (any growth model, or an Arbaro species); otherwise the argument
 // must name a preset. Throws InputError naming the argument and the presets on offer.
 TreeModel loadModelArgument(const std::string& presetOrFile, ImportNotes* notes = nullptr, AngleChoice angles = AngleChoice::File);
+
+// The same, but a file may also be a skeleton (arbor-skeleton/1) or a branch graph (arbor-graph/1) given whole.
+TreeSource loadTreeArgument(const std::string& presetOrFile, ImportNotes* notes = nullptr, AngleChoice angles = AngleChoice::File);
 
 }  // namespace arbor::cli

@@ -37,7 +37,7 @@ int runAccuracy(const AccuracyOptions& o) {
     GrowthOptions growth;
     growth.seed = o.seed;
     growth.levels = o.levels;
-    const TreeMesh tree = buildTreeMesh(loadModelArgument(name, nullptr, o.angles).grow(growth));
+    const TreeMesh tree = buildTreeMesh(loadTreeArgument(name, nullptr, o.angles).grow(growth));
     const PatchSet set = buildPatches(tree.mesh);
     const AccAccuracy a = measureAccAccuracy(tree.mesh, set, o.maxPatches, o.samples);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -54,12 +54,12 @@ int runBenchLeaves(const BenchLeavesOptions& o) {
 
   // The mesh keeps the species' levels; more levels are grown (the same tree below, breadth-first) until the
   // deepest carries enough leaves for the largest count.
-  const TreeModel model = loadModelArgument(o.species, nullptr, o.angles);
+  const TreeSource source = loadTreeArgument(o.species, nullptr, o.angles);
   const std::uint32_t most = *std::max_element(counts.begin(), counts.end());
   GrowthOptions growth;
   growth.seed = o.seed;
-  growth.levels = model.levels();
-  Skeleton skeleton = model.grow(growth);
+  growth.levels = source.levels();
+  Skeleton skeleton = source.grow(growth);
   // Deeper levels are not always leafier (children that run out of wood are not grown): keep the leafiest.
   int leafiestLevels = growth.levels;
   while (skeleton.leaves.size() < most && growth.levels < 8) {
@@ -67,7 +67,7 @@ int runBenchLeaves(const BenchLeavesOptions& o) {
     ++growth.levels;
     Skeleton deeper;
     try {
-      deeper = model.grow(growth);
+      deeper = source.grow(growth);
     } catch (const GenerationError& e) {
       std::fprintf(stderr, "arbor bench leaves: not at %d levels: %s\n", growth.levels, e.what());
       break;
@@ -83,7 +83,7 @@ int runBenchLeaves(const BenchLeavesOptions& o) {
                                                            " leaves (at " + std::to_string(leafiestLevels) + " levels); give counts up to that");
   }
   MeshOptions meshOptions;
-  meshOptions.levels = model.levels();
+  meshOptions.levels = source.levels();
   const TreeMesh tree = buildTreeMesh(skeleton, meshOptions);
   const PatchSet patches = buildPatches(tree.mesh);
 
@@ -96,7 +96,7 @@ int runBenchLeaves(const BenchLeavesOptions& o) {
   const bool hostTimed = context.isLavapipe();  // its timestamps miss the deferred rasterisation
 
   std::printf("%s: %zu quads (%s, factor %g), %zu leaves grown at %d levels; %ux%u on %s, %d frames per row after one warm-up%s\n\n",
-              model.name().c_str(), tree.mesh.quads.size(), render::renderModeName(base.mode), static_cast<double>(base.tessLevel),
+              source.name().c_str(), tree.mesh.quads.size(), render::renderModeName(base.mode), static_cast<double>(base.tessLevel),
               skeleton.leaves.size(), growth.levels, width, height, context.deviceDescription().c_str(), o.frames,
               context.validationEnabled() ? ", validation on" : "");
   std::printf("| leaves | self-shadowing | triangles | CPU frame ms (min-max) | GPU frame ms (min-max) | frames/s |\n");

@@ -130,7 +130,7 @@ int runBenchTess(const BenchTessOptions& o) {
   csv << "mode,factor,adaptive_px,displacement,triangles,cpu_ms_median,cpu_ms_min,cpu_ms_max,gpu_ms_median,gpu_ms_min,"
          "gpu_ms_max,mtriangles_per_s,share_of_ceiling,gpu_bytes\n";
 
-  const TreeModel model = loadModelArgument(o.species, nullptr, o.angles);
+  const TreeSource source = loadTreeArgument(o.species, nullptr, o.angles);
   vk::VulkanContext context(vulkanOptions(o.validation, o.device));
   render::RenderSession session(context, width, height, VK_SAMPLE_COUNT_1_BIT, render::loadTreeTextures(assetDirectory()));
   const float aspect = static_cast<float>(width) / static_cast<float>(height);
@@ -139,7 +139,7 @@ int runBenchTess(const BenchTessOptions& o) {
   TreeMesh tree;
   double patchUploadMs = 0.0;  // the tessellated path's counterpart of subdividing and uploading
   if (forestScene) {
-    scene.forest = growForest(context, ForestRequest{{o.species}, {model}, forestTrees, 3, o.seed}, "arbor bench tess");
+    scene.forest = growForest(context, ForestRequest{{o.species}, {source}, forestTrees, 3, o.seed}, "arbor bench tess");
     session.renderer().setTrees(scene.forest->gpuTrees());
     scene.camera = scene.forest->overview(aspect);
     // Every tree at its whole mesh, so that a factor means the same everywhere.
@@ -152,7 +152,7 @@ int runBenchTess(const BenchTessOptions& o) {
     GrowthOptions growth;
     growth.seed = o.seed;
     growth.levels = o.levels;
-    tree = buildTree(model.grow(growth), BuildOptions{{}, false}).mesh;  // patches are timed with the upload below
+    tree = buildTree(source.grow(growth), BuildOptions{{}, false}).mesh;  // patches are timed with the upload below
     const auto start = std::chrono::steady_clock::now();
     session.setTree(tree.mesh, buildPatches(tree.mesh));
     patchUploadMs = msSince(start);
@@ -165,7 +165,7 @@ int runBenchTess(const BenchTessOptions& o) {
   // Lavapipe rasterises when the render pass ends, after the timestamps: its whole frame is the host's wait.
   const bool hostTimed = context.isLavapipe();
 
-  std::printf("%s: %s at %ux%u on %s, %d frames per cell after one warm-up%s\n\n", model.name().c_str(), scene.description.c_str(),
+  std::printf("%s: %s at %ux%u on %s, %d frames per cell after one warm-up%s\n\n", source.name().c_str(), scene.description.c_str(),
               width, height, context.deviceDescription().c_str(), o.frames, context.validationEnabled() ? ", validation on" : "");
   std::fflush(stdout);
 

@@ -46,14 +46,14 @@ Checked load(const CheckOptions& o) {
     c.tree.mesh = readObjQuads(o.input);
     c.title = o.input;
   } else {
-    const TreeModel model = loadModelArgument(o.input, nullptr, o.angles);
+    const TreeSource source = loadTreeArgument(o.input, nullptr, o.angles);
     GrowthOptions growth;
     growth.seed = o.seed;
     growth.levels = o.levels;
-    c.skeleton = model.grow(growth);
+    c.skeleton = source.grow(growth);
     c.tree = buildTreeMesh(c.skeleton);
     c.grown = true;
-    c.title = model.name() + ", seed " + std::to_string(o.seed) + ", " + std::to_string(c.skeleton.levels) + " levels";
+    c.title = source.name() + ", seed " + std::to_string(c.skeleton.seed) + ", " + std::to_string(c.skeleton.levels) + " levels";
   }
   c.buildMs = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
   return c;

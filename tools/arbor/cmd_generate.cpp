@@ -66,7 +66,7 @@ int runGenerate(const GenerateOptions& o) {
     throw InputError(o.out, "--out", "--subdivide and --triangles apply to meshes (.obj, .gltf, .glb), not to a skeleton");
   }
   ImportNotes notes;
-  const TreeModel model = loadModelArgument(o.species, &notes, o.angles);
+  const TreeSource source = loadTreeArgument(o.species, &notes, o.angles);
   if (!o.quiet) printNotes(o.species, notes);
 
   GrowthOptions growth;
@@ -75,7 +75,7 @@ int runGenerate(const GenerateOptions& o) {
   using Clock = std::chrono::steady_clock;
   auto ms = [](Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double, std::milli>(b - a).count(); };
   const auto t0 = Clock::now();
-  const Skeleton skeleton = model.grow(growth);
+  const Skeleton skeleton = source.grow(growth);
   const auto t1 = Clock::now();
 
   std::string content;
@@ -88,8 +88,8 @@ int runGenerate(const GenerateOptions& o) {
     if (o.subdivide > 0) subdivided = subdivide(tree.mesh, o.subdivide);
   }
   const QuadMesh& exported = o.subdivide > 0 ? subdivided : tree.mesh;
-  if (type == OutputType::Gltf) content = writeGltf(exported, model.name());
-  if (type == OutputType::Glb) content = writeGlb(exported, model.name());
+  if (type == OutputType::Gltf) content = writeGltf(exported, source.name());
+  if (type == OutputType::Glb) content = writeGlb(exported, source.name());
   // The summary's topology and patch counts are worked out on another core while the file is written.
   struct MeshSummary {
     MeshTopologyReport topology;
@@ -109,8 +109,8 @@ int runGenerate(const GenerateOptions& o) {
   for (std::size_t i = 0; i < stats.stemsPerLevel.size(); ++i) {
     perLevel += (i ? ", " : "") + std::to_string(stats.stemsPerLevel[i]);
   }
-  std::printf("%s, seed %llu, %d levels: skeleton in %.1f ms\n", model.name().c_str(),
-              static_cast<unsigned long long>(o.seed), skeleton.levels, ms(t0, t1));
+  std::printf("%s, seed %llu, %d levels: skeleton %s in %.1f ms\n", source.name().c_str(),
+              static_cast<unsigned long long>(skeleton.seed), skeleton.levels, source.model() ? "grown" : "from its file", ms(t0, t1));
   std::printf("  stems per level  %s\n", perLevel.c_str());
   std::printf("  nodes            %zu (%zu branch points)\n", stats.nodes, stats.branchPoints);
   std::printf("  leaves           %zu\n", stats.leaves);
@@ -146,34 +146,56 @@ int runGenerate(const GenerateOptions& o) {
 
 }  // namespace
 
-void addGenerateCommand(CLI::App& app, Action& action) {
-  auto o = std::make_shared<GenerateOptions>();
-  CLI::App* cmd = app.add_subcommand("generate", "Grow a tree from a preset or model file and write its skeleton or mesh.");
-  cmd->add_option("species", o->species, "Preset name (see 'arbor species --list'), a .json model file or an .xml Arbaro species file")
-      ->required();
-  addAnglesOption(cmd, o->angles);
-  cmd->add_option("--seed", o->seed, "Random seed; the same seed gives byte-identical output")->check(Seed())->capture_default_str();
-  cmd->add_option("--levels", o->levels, "Stem levels to grow (default: the species' Levels)")
+namespace {
+
+// `generate` and `mesh` are one command: a tree from any source, out as a skeleton or a mesh.
+void addOptions(CLI::App* cmd, GenerateOptions& o, const char* input) {
+  cmd->add_option("species", o.species, input)->required();
+  addAnglesOption(cmd, o.angles);
+  cmd->add_option("--seed", o.seed, "Random seed of a growth model; the same seed gives byte-identical output (a skeleton or graph file is the same tree for any seed)")
+      ->check(Seed())
+      ->capture_default_str();
+  cmd->add_option("--levels", o.levels, "Stem levels to grow (default: the model's Levels; a skeleton or graph file keeps its own)")
       ->check(Whole(1, 8));
-  cmd->add_option("--out", o->out,
+  cmd->add_option("--out", o.out,
                   "Output file: .json writes the skeleton; .obj (quads), .gltf or .glb (triangles, with _RADIUS, "
                   "_LEVEL and _FLIP attributes) write the mesh")
       ->required();
-  cmd->add_option("--ring-spacing", o->mesh.ringSpacing,
+  cmd->add_option("--ring-spacing", o.mesh.ringSpacing,
                   "Extra cross sections wherever rings are farther apart than this many local radii (0: off)")
       ->check(OffOrNumber(0.01, 1000.0))
       ->capture_default_str();
-  cmd->add_option("--max-ring-distance", o->mesh.maxRingDistance,
+  cmd->add_option("--max-ring-distance", o.mesh.maxRingDistance,
                   "Extra cross sections wherever rings are farther apart than this many metres (0: off)")
       ->check(OffOrNumber(0.0001, 1000.0))
       ->capture_default_str();
-  cmd->add_option("--mesh-levels", o->mesh.levels, "Mesh only stems of levels below this (0: all)")
+  cmd->add_option("--mesh-levels", o.mesh.levels, "Mesh only stems of levels below this (0: all)")
       ->check(Whole(0, 8));
-  cmd->add_flag("--open-base", o->mesh.openBase, "Leave the ring at the trunk base open (closed by default)");
-  cmd->add_flag("--triangles", o->triangles, "Write triangles instead of quads to .obj");
-  cmd->add_option("--subdivide", o->subdivide, "Export the mesh after N Catmull-Clark levels (OpenSubdiv)")
+  cmd->add_flag("--open-base", o.mesh.openBase, "Leave the ring at the trunk base open (closed by default)");
+  cmd->add_flag("--triangles", o.triangles, "Write triangles instead of quads to .obj");
+  cmd->add_option("--subdivide", o.subdivide, "Export the mesh after N Catmull-Clark levels (OpenSubdiv)")
       ->check(Whole(0, 6));
-  cmd->add_flag("--quiet", o->quiet, "Print nothing on success");
+  cmd->add_flag("--quiet", o.quiet, "Print nothing on success");
+}
+
+}  // namespace
+
+void addGenerateCommand(CLI::App& app, Action& action) {
+  auto o = std::make_shared<GenerateOptions>();
+  CLI::App* cmd = app.add_subcommand("generate", "Grow a tree from a preset or model file and write its skeleton or mesh.");
+  addOptions(cmd, *o,
+             "Preset name (see 'arbor species --list'), a .json model file, an .xml Arbaro species file, or an "
+             "arbor-skeleton/1 or arbor-graph/1 .json file");
+  cmd->callback([o, &action] { action = [o] { return runGenerate(*o); }; });
+}
+
+void addMeshCommand(CLI::App& app, Action& action) {
+  auto o = std::make_shared<GenerateOptions>();
+  CLI::App* cmd = app.add_subcommand("mesh", "Mesh a skeleton or branch graph (any rooted graph of internodes) as one closed quad mesh; "
+                                             "also takes what 'generate' takes.");
+  addOptions(cmd, *o,
+             "An arbor-graph/1 file (docs/graph-format.md) or arbor-skeleton/1 file (docs/skeleton-format.md), "
+             "or a preset or model file");
   cmd->callback([o, &action] { action = [o] { return runGenerate(*o); }; });
 }
 

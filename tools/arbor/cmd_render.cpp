@@ -73,10 +73,10 @@ int runRender(const RenderOptions& o) {
   if (!endsWith(o.out, ".png")) throw InputError(o.out, "--out", "the picture is written as PNG; use a .png name");
   requireOutputFile(o.out);
 
-  const TreeModel model = loadModelArgument(o.species, nullptr, o.angles);
+  const TreeSource source = loadTreeArgument(o.species, nullptr, o.angles);
   // The mesh keeps --levels (or the species'); impostor levels grow beyond them (breadth-first: the same tree
   // below), are drawn as fake branches, and carry the leaves.
-  const int meshLevels = o.levels > 0 ? o.levels : model.levels();
+  const int meshLevels = o.levels > 0 ? o.levels : source.levels();
   if (meshLevels + impostorLevels > 8) {
     throw InputError(std::to_string(impostorLevels), "--impostor-levels",
                        "mesh levels (" + std::to_string(meshLevels) + ") plus impostor levels may be at most 8");
@@ -84,7 +84,7 @@ int runRender(const RenderOptions& o) {
   GrowthOptions growth;
   growth.seed = o.seed;
   growth.levels = meshLevels + impostorLevels;
-  const Skeleton skeleton = model.grow(growth);
+  const Skeleton skeleton = source.grow(growth);
   BuildOptions build;
   build.mesh.levels = meshLevels;
   const auto [tree, patches, impostors, sketch] = buildTree(skeleton, build);
@@ -131,7 +131,7 @@ int runRender(const RenderOptions& o) {
   std::sort(gpu.begin(), gpu.end());
   std::sort(cpu.begin(), cpu.end());
   const render::GpuTree& gpuTree = *session.tree();
-  std::printf("%s on %s%s\n", model.name().c_str(), context.deviceDescription().c_str(),
+  std::printf("%s on %s%s\n", source.name().c_str(), context.deviceDescription().c_str(),
               context.validationEnabled() ? ", validation on" : "");
   std::printf("  mode             %s", render::renderModeName(settings.mode));
   if (settings.mode != render::RenderMode::Flat) {

@@ -32,6 +32,12 @@ const GrowthModelInfo& modelNamed(const std::string& name) {
   throw InputError(name, "--model", "is not a growth model; allowed: " + names);
 }
 
+// A skeleton or graph file holds a tree already grown: it has no parameters to print.
+TreeModel modelOf(const TreeSource& source, const std::string& file) {
+  if (!source.model()) throw InputError(file, "format", "holds a tree already grown, not a model file; 'arbor mesh', 'render' and 'view' take it");
+  return *source.model();
+}
+
 int runSpecies(const SpeciesOptions& o) {
   const GrowthModelInfo& model = modelNamed(o.model);
   if (o.formatDoc) {
@@ -51,7 +57,7 @@ int runSpecies(const SpeciesOptions& o) {
   if (!o.random.empty() && !o.species.empty()) throw InputError(o.species, "--random", "give either a species or --random SEED, not both");
   if (!o.out.empty()) requireOutputFile(o.out);
   ImportNotes notes;
-  const TreeModel tree = o.random.empty() ? loadModelArgument(o.species, &notes, o.angles) : model.random(std::stoull(o.random));
+  const TreeModel tree = o.random.empty() ? modelOf(loadTreeArgument(o.species, &notes, o.angles), o.species) : model.random(std::stoull(o.random));
   const std::string json = tree.toJson();
   if (o.out.empty()) {
     std::fputs(json.c_str(), stdout);

@@ -64,8 +64,8 @@ struct ViewOptions {
 };
 
 // What the overlay changes while the viewer runs.
-ForestRequest forestRequest(const ViewOptions& o, const std::vector<TreeModel>& models) {
-  return ForestRequest{o.species, models, o.forest, o.seeds, o.seed};
+ForestRequest forestRequest(const ViewOptions& o, const std::vector<TreeSource>& sources) {
+  return ForestRequest{o.species, sources, o.forest, o.seeds, o.seed};
 }
 
 std::string screenshotName(const std::string& dir, int frame) {
@@ -92,7 +92,7 @@ std::optional<render::DetailDistances> parseDetail(const std::string& text) {
 // Everything the options say, read once before anything is grown, so that bad input fails early.
 struct ViewPlan {
   std::uint32_t width = 0, height = 0;
-  std::vector<TreeModel> models;
+  std::vector<TreeSource> sources;
   std::vector<render::Camera> path;  // empty: the forest's tour
   std::vector<WindowEvent> events;
   std::optional<render::DetailDistances> detail;
@@ -135,7 +135,7 @@ int runOffscreen(const ViewOptions& o, const ViewPlan& plan, ViewState& state) {
   vk::VulkanContext context(vulkanOptions(o.validation, o.device));
   applyDeviceDefaults(o, plan, context, state);
   render::RenderSession session(context, width, height, VK_SAMPLE_COUNT_1_BIT, render::loadTreeTextures(assetDirectory()));
-  const std::unique_ptr<render::Forest> grown = growForest(context, forestRequest(o, plan.models), "arbor view");
+  const std::unique_ptr<render::Forest> grown = growForest(context, forestRequest(o, plan.sources), "arbor view");
   const render::Forest& forest = *grown;
   session.renderer().setTrees(forest.gpuTrees());
   const float aspect = static_cast<float>(width) / static_cast<float>(height);
@@ -164,7 +164,7 @@ int runOffscreen(const ViewOptions& o, const ViewPlan& plan, ViewState& state) {
 
 int runWindow(const ViewOptions& o, ViewPlan& plan, ViewState& state) {
   const std::vector<render::Camera>& path = plan.path;
-  std::vector<TreeModel>& models = plan.models;  // the panel edits them
+  std::vector<TreeSource>& sources = plan.sources;  // the panel edits their models
   const int frames = plan.frames, every = plan.every;
   window::Window win("Arbor", static_cast<int>(plan.width), static_cast<int>(plan.height));
   if (o.fullscreen) win.toggleFullscreen();
@@ -178,7 +178,7 @@ int runWindow(const ViewOptions& o, ViewPlan& plan, ViewState& state) {
   {
     window::Swapchain swapchain(context, surface, win.framebufferSize(), !o.noVsync);
     render::TreeRenderer renderer(context, swapchain.renderPass(), VK_SAMPLE_COUNT_1_BIT, render::loadTreeTextures(assetDirectory()));
-    auto forest = growForest(context, forestRequest(o, models), "arbor view");
+    auto forest = growForest(context, forestRequest(o, sources), "arbor view");
     renderer.setTrees(forest->gpuTrees());
     window::Overlay overlay(context, win.handle(), swapchain.renderPass(), swapchain.imageCount());
     const bool scripted = frames > 0;
@@ -247,7 +247,7 @@ int runWindow(const ViewOptions& o, ViewPlan& plan, ViewState& state) {
       visible = forest->frame(camera, aspectOf(swapchain.extent()), state.detail);
       if (state.showOverlay) {
         overlay.newFrame();
-        drawPanel(state, visible, stats, models, o.species, context.deviceDescription());
+        drawPanel(state, visible, stats, sources, o.species, context.deviceDescription());
       }
       VkCommandBuffer cmd = VK_NULL_HANDLE;
       if (!swapchain.beginFrame(cmd)) {
@@ -286,14 +286,14 @@ int runWindow(const ViewOptions& o, ViewPlan& plan, ViewState& state) {
       if (!current) swapchain.recreate(win.framebufferSize());
       if (state.regenerate) {
         state.regenerate = false;
-        updateEstimates(state, models, o.species);  // the panel's button is off past the limits; --events is not
+        updateEstimates(state, sources, o.species);  // the panel's button is off past the limits; --events is not
         if (!state.refusal.empty()) {
           std::fprintf(stderr, "arbor view: not regenerated, keeping the previous trees: %s\n", state.refusal.c_str());
           continue;
         }
         swapchain.waitIdle();
         try {
-          auto grown = growForest(context, forestRequest(o, models), "arbor view");
+          auto grown = growForest(context, forestRequest(o, sources), "arbor view");
           renderer.setTrees(grown->gpuTrees());
           forest = std::move(grown);
         } catch (const std::exception& e) {
@@ -334,7 +334,7 @@ int runView(const ViewOptions& o) {
   parseSize(o.size, plan.width, plan.height);
   plan.detail = parseDetail(o.detail);
   plan.events = parseEvents(o.events);
-  for (const std::string& name : o.species) plan.models.push_back(loadModelArgument(name, nullptr, o.angles));
+  for (const std::string& name : o.species) plan.sources.push_back(loadTreeArgument(name, nullptr, o.angles));
   if (!o.cameraPath.empty()) plan.path = readCameraPath(o.cameraPath);
   // Scripted: a camera path or a frame count; without a display the scene goes to PNG files instead.
   const bool scripted = !o.cameraPath.empty() || o.frames > 0;

@@ -12,6 +12,7 @@ constexpr int kExitFailure = 1;
 constexpr int kExitBadInput = 2;
 
 void addGenerateCommand(CLI::App& app, Action& action);
+void addMeshCommand(CLI::App& app, Action& action);
 void addSpeciesCommand(CLI::App& app, Action& action);
 void addBenchCommand(CLI::App& app, Action& action);
 void addBenchTessCommand(CLI::App& bench, Action& action);  // under `bench`

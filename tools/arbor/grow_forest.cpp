@@ -10,7 +10,7 @@ namespace arbor::cli {
 std::unique_ptr<render::Forest> growForest(const vk::VulkanContext& context, const ForestRequest& request, const std::string& who) {
   ForestTreesOptions options;
   options.labels = request.labels;
-  options.models = request.models;
+  options.sources = request.sources;
   options.trees = request.trees;
   options.seeds = request.seeds;
   options.seed = request.seed;

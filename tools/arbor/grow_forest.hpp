@@ -1,21 +1,21 @@
 #pragma once
-// A forest for `view` and `bench tess`: the models' distinct trees grown and built (tree/forest_trees), then
+// A forest for `view` and `bench tess`: the sources' distinct trees grown and built (tree/forest_trees), then
 // uploaded and placed by the renderer.
 #include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
 
-#include "growth/growth_model.hpp"
+#include "tree/tree_source.hpp"
 #include "render/forest.hpp"
 
 namespace arbor::cli {
 
 struct ForestRequest {
-  std::vector<std::string> labels;  // one per model
-  std::vector<TreeModel> models;
+  std::vector<std::string> labels;  // one per source
+  std::vector<TreeSource> sources;
   std::uint32_t trees = 1;          // instances
-  std::uint32_t seeds = 3;          // distinct seeds per model
+  std::uint32_t seeds = 3;          // distinct seeds per growth model
   std::uint64_t seed = 1;
 };
 

@@ -40,6 +40,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   Action action;
   addGenerateCommand(app, action);
+  addMeshCommand(app, action);
   addSpeciesCommand(app, action);
   addBenchCommand(app, action);
   addRenderCommand(app, action);

@@ -31,7 +31,7 @@ bool parameterSlider(TreeModel& model, std::size_t index, const ModelParameter& 
 
 }  // namespace
 
-void drawPanel(ViewState& state, const render::ForestFrame& frame, const render::FrameStats& stats, std::vector<TreeModel>& models,
+void drawPanel(ViewState& state, const render::ForestFrame& frame, const render::FrameStats& stats, std::vector<TreeSource>& sources,
                const std::vector<std::string>& names, const std::string& device) {
   ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowSize(ImVec2(430, 540), ImGuiCond_FirstUseEver);
@@ -70,14 +70,16 @@ void drawPanel(ViewState& state, const render::ForestFrame& frame, const render:
   ImGui::SliderFloat("sun azimuth", &state.lightAzimuth, -180.0f, 180.0f);
   ImGui::SliderFloat("sun elevation", &state.lightElevation, -10.0f, 90.0f);
   s.lightDirection = render::sunDirection(state.lightAzimuth, state.lightElevation);
-  if (state.estimates.size() != models.size()) updateEstimates(state, models, names);
+  if (state.estimates.size() != sources.size()) updateEstimates(state, sources, names);
   bool edited = false;
-  for (std::size_t k = 0; k < models.size(); ++k) {
+  for (std::size_t k = 0; k < sources.size(); ++k) {
     if (!ImGui::CollapsingHeader(names[k].c_str())) continue;
     ImGui::PushID(static_cast<int>(k));
     const TreeEstimate& e = state.estimates[k];
     ImGui::Text("about %.3g nodes, %.3g leaves, %.3g quads", e.nodes, e.leaves, e.quads);
-    const std::vector<ModelParameter> parameters = models[k].parameters();
+    TreeModel* model = sources[k].model();
+    if (!model) ImGui::TextWrapped("a skeleton given whole: no parameters to edit");
+    const std::vector<ModelParameter> parameters = model ? model->parameters() : std::vector<ModelParameter>{};
     std::size_t i = 0;
     while (i < parameters.size()) {
       // A run of parameters with one group: the tree's own in the open, each other group under its heading.
@@ -85,13 +87,13 @@ void drawPanel(ViewState& state, const render::ForestFrame& frame, const render:
       std::size_t end = i;
       while (end < parameters.size() && parameters[end].group == group) ++end;
       const bool open = group.empty() || ImGui::TreeNode(group.c_str());
-      for (; open && i < end; ++i) edited |= parameterSlider(models[k], i, parameters[i]);
+      for (; open && i < end; ++i) edited |= parameterSlider(*model, i, parameters[i]);
       if (open && !group.empty()) ImGui::TreePop();
       i = end;
     }
     ImGui::PopID();
   }
-  if (edited) updateEstimates(state, models, names);
+  if (edited) updateEstimates(state, sources, names);
   if (state.refusal.empty()) {
     if (ImGui::Button("regenerate")) state.regenerate = true;
   } else {
@@ -104,11 +106,11 @@ void drawPanel(ViewState& state, const render::ForestFrame& frame, const render:
   ImGui::End();
 }
 
-void updateEstimates(ViewState& state, const std::vector<TreeModel>& models, const std::vector<std::string>& names) {
+void updateEstimates(ViewState& state, const std::vector<TreeSource>& sources, const std::vector<std::string>& names) {
   state.estimates.clear();
   state.refusal.clear();
-  for (std::size_t k = 0; k < models.size(); ++k) {
-    state.estimates.push_back(models[k].estimate());
+  for (std::size_t k = 0; k < sources.size(); ++k) {
+    state.estimates.push_back(sources[k].estimate());
     const std::string excess = state.estimates.back().excess(TreeLimits{});
     if (!excess.empty() && state.refusal.empty()) state.refusal = names[k] + ": " + excess;
   }

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "growth/growth_model.hpp"
+#include "tree/tree_source.hpp"
 #include "render/forest.hpp"
 #include "render/renderer.hpp"
 
@@ -18,17 +19,18 @@ struct ViewState {
   bool regenerate = false;
   std::vector<float> frameTimes = std::vector<float>(120, 0.0f);
   std::size_t frameIndex = 0;
-  std::vector<TreeEstimate> estimates;  // per tree model, redone whenever a slider moves
+  std::vector<TreeEstimate> estimates;  // per tree source, redone whenever a slider moves
   std::string refusal;                  // why the trees as set would not be grown ("" when they would)
 };
 
-// The estimate of every model and, when one passes the limits, the refusal that stops regeneration.
-void updateEstimates(ViewState& state, const std::vector<TreeModel>& models, const std::vector<std::string>& names);
+// The estimate of every source and, when one passes the limits, the refusal that stops regeneration.
+void updateEstimates(ViewState& state, const std::vector<TreeSource>& sources, const std::vector<std::string>& names);
 
 // Figures (device, frame-time graph, triangles, trees per detail), render settings, and every numeric
-// parameter of each tree model (grouped as the model groups them) with a regenerate button. Between the
+// parameter of each tree's growth model (grouped as the model groups them; a skeleton given whole has none)
+// with a regenerate button. Between the
 // overlay's newFrame and render.
-void drawPanel(ViewState& state, const render::ForestFrame& frame, const render::FrameStats& stats, std::vector<TreeModel>& models,
+void drawPanel(ViewState& state, const render::ForestFrame& frame, const render::FrameStats& stats, std::vector<TreeSource>& sources,
                const std::vector<std::string>& names, const std::string& device);
 
 }  // namespace arbor::cli
