@@ -55,7 +55,7 @@ void addAccuracyCommand(CLI::App& app, Action& action) {
   auto o = std::make_shared<AccuracyOptions>();
   CLI::App* cmd = app.add_subcommand(
       "accuracy", "Distance of ACC's patches from the exact limit surface (OpenSubdiv), relative to the branch radius.");
-  cmd->add_option("species", o->species, "Presets or species files (default: every preset)");
+  cmd->add_option("species", o->species, "Presets, or model, skeleton or graph files (default: every preset)");
   addAnglesOption(cmd, o->angles);
   cmd->add_option("--seed", o->seed, "Random seed")->check(Seed())->capture_default_str();
   cmd->add_option("--levels", o->levels, "Stem levels (default: each species' Levels)")->check(Whole(1, 8));

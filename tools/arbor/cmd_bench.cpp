@@ -112,7 +112,7 @@ void addBenchCommand(CLI::App& app, Action& action) {
   bench->require_subcommand(1);
   auto o = std::make_shared<BenchOptions>();
   CLI::App* gen = bench->add_subcommand("generate", "Time skeleton generation per preset (one thread).");
-  gen->add_option("species", o->species, "Presets or species files (default: every preset)");
+  gen->add_option("species", o->species, "Presets, or model, skeleton or graph files (default: every preset)");
   addAnglesOption(gen, o->angles);
   gen->add_option("--repeat", o->repeat, "Runs per species; the median and minimum are printed")
       ->check(Whole(1, 1000))
@@ -123,7 +123,7 @@ void addBenchCommand(CLI::App& app, Action& action) {
 
   auto m = std::make_shared<BenchOptions>();
   CLI::App* mesh = bench->add_subcommand("mesh", "Time parameters (or a branch graph) -> skeleton -> mesh -> patches per preset (one thread).");
-  mesh->add_option("species", m->species, "Presets or species files (default: every preset)");
+  mesh->add_option("species", m->species, "Presets, or model, skeleton or graph files (default: every preset)");
   addAnglesOption(mesh, m->angles);
   mesh->add_option("--repeat", m->repeat, "Runs per species; medians are printed")->check(Whole(1, 1000))->capture_default_str();
   mesh->add_option("--seed", m->seed, "Random seed")->check(Seed())->capture_default_str();

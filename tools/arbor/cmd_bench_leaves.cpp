@@ -142,7 +142,7 @@ int runBenchLeaves(const BenchLeavesOptions& o) {
 void addBenchLeavesCommand(CLI::App& bench, Action& action) {
   auto o = std::make_shared<BenchLeavesOptions>();
   CLI::App* cmd = bench.add_subcommand("leaves", "Frame time against leaves drawn, with and without self-shadowing (Vulkan).");
-  cmd->add_option("species", o->species, "Preset or species file (grown to more levels until it has enough leaves)")->capture_default_str();
+  cmd->add_option("species", o->species, "Preset or model file (grown to more levels until it has enough leaves)")->capture_default_str();
   addAnglesOption(cmd, o->angles);
   cmd->add_option("--seed", o->seed, "Random seed")->check(Seed())->capture_default_str();
   cmd->add_option("--counts", o->counts, "Leaves drawn per row, comma-separated (the first of the random order)")->capture_default_str();

@@ -327,7 +327,7 @@ int runBenchTess(const BenchTessOptions& o) {
 void addBenchTessCommand(CLI::App& bench, Action& action) {
   auto o = std::make_shared<BenchTessOptions>();
   CLI::App* cmd = bench.add_subcommand("tess", "Frame time and triangles generated per mode and tessellation factor (Vulkan).");
-  cmd->add_option("species", o->species, "Preset or species file")->capture_default_str();
+  cmd->add_option("species", o->species, "Preset, or model, skeleton or graph file")->capture_default_str();
   addAnglesOption(cmd, o->angles);
   cmd->add_option("--seed", o->seed, "Random seed")->check(Seed())->capture_default_str();
   cmd->add_option("--levels", o->levels, "Stem levels (default: the species' Levels)")->check(Whole(1, 8));

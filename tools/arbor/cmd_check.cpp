@@ -156,11 +156,11 @@ void addCheckCommand(CLI::App& app, Action& action) {
       "Find intersecting quads of a tree's mesh and tell the skeleton's crossings from the mesher's. Exit code 0: "
       "no mesh-made pairs (an .obj: no pairs at all); 1: some; 2: bad input.");
   cmd->add_option("input", o->input,
-                  "Preset name, .json/.xml species file (grown with --seed/--levels and meshed; pairs classified), "
+                  "Preset name, model file (.json, Arbaro .xml: grown with --seed/--levels), skeleton or graph file (meshed; pairs classified), "
                   "or an .obj of quads (pairs counted, not classified)")
       ->required();
   addAnglesOption(cmd, o->angles);
-  cmd->add_option("--seed", o->seed, "Random seed for a preset or species file")->check(Seed())->capture_default_str();
+  cmd->add_option("--seed", o->seed, "Random seed for a preset or model file")->check(Seed())->capture_default_str();
   cmd->add_option("--levels", o->levels, "Stem levels to grow (default: the species' Levels)")->check(Whole(1, 8));
   cmd->add_option("--list", o->list, "Print the first N pairs: quads, stems, levels, contact, origin, a point")
       ->check(Whole(0, 1000000000));

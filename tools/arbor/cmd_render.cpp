@@ -161,7 +161,7 @@ int runRender(const RenderOptions& o) {
 void addRenderCommand(CLI::App& app, Action& action) {
   auto o = std::make_shared<RenderOptions>();
   CLI::App* cmd = app.add_subcommand("render", "Render a tree offscreen with GPU tessellation (Vulkan) to a PNG.");
-  cmd->add_option("species", o->species, "Preset name or .json/.xml species file")->required();
+  cmd->add_option("species", o->species, "Preset name, or a model (.json, Arbaro .xml), skeleton or graph file")->required();
   addAnglesOption(cmd, o->angles);
   cmd->add_option("--seed", o->seed, "Random seed")->check(Seed())->capture_default_str();
   cmd->add_option("--levels", o->levels, "Stem levels to grow and mesh (default: the species' Levels)")->check(Whole(1, 8));

@@ -351,7 +351,7 @@ int runView(const ViewOptions& o) {
 void addViewCommand(CLI::App& app, Action& action) {
   auto o = std::make_shared<ViewOptions>();
   CLI::App* cmd = app.add_subcommand("view", "Walk through a generated forest in a window (Vulkan); offscreen PNGs where no display is.");
-  cmd->add_option("species", o->species, "Presets or species files (default: black-tupelo)");
+  cmd->add_option("species", o->species, "Presets, or model, skeleton or graph files (default: black-tupelo)");
   addAnglesOption(cmd, o->angles);
   cmd->add_option("--forest", o->forest, "Trees to place (1: one tree, orbit camera)")->check(Whole(1, 5000))->capture_default_str();
   cmd->add_option("--seeds", o->seeds, "Distinct seeds per species (each grown once, then instanced)")->check(Whole(1, 16))->capture_default_str();
