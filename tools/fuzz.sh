@@ -22,7 +22,7 @@ else
   limit=(-max_total_time="$seconds")
 fi
 targets=("$@")
-((${#targets[@]})) || targets=(species_json species_xml camera_path events cli_values)
+((${#targets[@]})) || targets=(species_json species_xml graph_json skeleton_json camera_path events cli_values)
 
 bash "$root/tools/install-deps.sh" --fuzz
 cmake -S "$root" -B "$root/build-fuzz" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_C_COMPILER=clang-14 -DCMAKE_CXX_COMPILER=clang++-14 \

@@ -7,20 +7,6 @@
 
 namespace arbor {
 
-const char* nodeKindName(NodeKind kind) {
-  switch (kind) {
-    case NodeKind::Root: return "root";
-    case NodeKind::Base: return "base";
-    case NodeKind::Joint: return "joint";
-    case NodeKind::Attachment: return "attachment";
-    case NodeKind::Split: return "split";
-    case NodeKind::Before: return "before";
-    case NodeKind::After: return "after";
-    case NodeKind::Tip: return "tip";
-  }
-  return "joint";
-}
-
 namespace {
 
 // Intermediate nodes sit at 10 % of a segment from the attachment (Nystad's 10 % rule), and only where
