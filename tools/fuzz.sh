@@ -37,7 +37,7 @@ for t in "${targets[@]}"; do
   mkdir -p "$work" "$findings"
   # CI: runs sized to about a minute each on two cores; growing trees makes the species targets slower per input.
   if ((ci)); then
-    case "$t" in species_json) runs=20000 ;; species_xml) runs=20000 ;; *) runs=1000000 ;; esac
+    case "$t" in species_json | species_xml | graph_json | skeleton_json) runs=20000 ;; *) runs=1000000 ;; esac
     limit=(-seed=1 -runs="$runs")
     rm -rf "$work" && mkdir -p "$work"  # the same start every time
   fi

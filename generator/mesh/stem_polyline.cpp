@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "cross_section.hpp"
+
 namespace arbor {
 
 StemPolyline::StemPolyline(const Skeleton& skeleton, int stem) {
@@ -49,8 +51,13 @@ Vec3 StemPolyline::direction(double s) const {
   const std::size_t i = edgeAt(s);
   const Vec3 d = glm::normalize(p_[i] - p_[i - 1]);
   const double eps = 1e-9 * std::max(1.0, length());
-  if (std::fabs(s - s_[i]) < eps && i + 1 < p_.size()) return glm::normalize(d + glm::normalize(p_[i + 1] - p_[i]));
-  if (std::fabs(s - s_[i - 1]) < eps && i >= 2) return glm::normalize(d + glm::normalize(p_[i - 1] - p_[i - 2]));
+  // At a joint, the bisector of the two edges; a stem turning straight back has none: any direction across it.
+  auto bisector = [&](const Vec3& other) {
+    const Vec3 sum = d + glm::normalize(other);
+    return glm::length(sum) > 1e-9 ? glm::normalize(sum) : transportFrame(RingFrame{}, d).N;
+  };
+  if (std::fabs(s - s_[i]) < eps && i + 1 < p_.size()) return bisector(p_[i + 1] - p_[i]);
+  if (std::fabs(s - s_[i - 1]) < eps && i >= 2) return bisector(p_[i - 1] - p_[i - 2]);
   return d;
 }
 
