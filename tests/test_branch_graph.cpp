@@ -3,6 +3,7 @@
 // formats read back byte for byte, and random graphs meshing to closed all-quad 2-manifolds.
 #include <catch2/catch.hpp>
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <map>
@@ -17,6 +18,7 @@
 #include "growth/weber_penn/weber_penn.hpp"
 #include "mesh/mesh_checks.hpp"
 #include "mesh/osd_topology.hpp"
+#include "mesh/self_intersection.hpp"
 #include "mesh/tree_mesh.hpp"
 #include "patches/acc.hpp"
 #include "patches/patch_set.hpp"
@@ -99,7 +101,69 @@ std::string meshProblem(const BranchGraph& g, bool osd, std::size_t& degenerate)
   return out.str();
 }
 
+// What the random graphs exercise: stems and stubs, nodes by meshed children (the continuing stem counts as one),
+// meshed children leaving near-parallel (within 15 degrees of the parent or of a meshed sibling) or backward.
+struct GraphExercise {
+  std::size_t stems = 0, stubs = 0, nearParallel = 0, backward = 0, meshedChildren = 0;
+  std::array<std::size_t, 8> nodesByChildren{};  // index: meshed children, 7 = more
+};
+
+void addExercise(const Skeleton& s, GraphExercise& e) {
+  std::vector<std::vector<std::size_t>> at(s.nodes.size());
+  for (std::size_t i = 0; i < s.stems.size(); ++i) {
+    const SkeletonStem& st = s.stems[i];
+    if (st.attachNode < 0) continue;
+    ++e.stems;
+    e.stubs += st.stub ? 1 : 0;
+    if (!st.stub) at[static_cast<std::size_t>(st.attachNode)].push_back(i);
+  }
+  auto firstDirection = [&](const SkeletonStem& st) {
+    return glm::normalize(s.nodes[static_cast<std::size_t>(st.firstNode)].world.position -
+                          s.nodes[static_cast<std::size_t>(st.attachNode)].world.position);
+  };
+  for (std::size_t n = 0; n < s.nodes.size(); ++n) {
+    if (at[n].empty()) continue;
+    const SkeletonNode& node = s.nodes[n];
+    const bool continues = node.kind != NodeKind::Root && node.kind != NodeKind::Tip;
+    ++e.nodesByChildren[std::min<std::size_t>(7, at[n].size() + (continues ? 1 : 0))];
+    for (std::size_t a : at[n]) {
+      const Vec3 d = firstDirection(s.stems[a]);
+      ++e.meshedChildren;
+      const double toParent = node.kind == NodeKind::Root ? 0.0 : std::acos(std::clamp(glm::dot(d, node.world.direction()), -1.0, 1.0));
+      bool parallel = node.kind != NodeKind::Root && toParent < 15.0 * 3.14159265 / 180.0;
+      for (std::size_t b : at[n])
+        if (b != a) parallel = parallel || glm::dot(d, firstDirection(s.stems[b])) > std::cos(15.0 * 3.14159265 / 180.0);
+      e.nearParallel += parallel ? 1 : 0;
+      e.backward += toParent > 0.5 * 3.14159265 ? 1 : 0;
+    }
+  }
+}
+
 }  // namespace
+
+TEST_CASE("what 1,000 random graphs exercise, slivers and mesh-made crossings (measured, not asserted)", "[graph][measure][.]") {
+  GraphExercise e;
+  std::size_t sliverGraphs = 0, meshMade = 0, meshMadeGraphs = 0, quads = 0;
+  const auto start = std::chrono::steady_clock::now();
+  for (std::uint64_t seed = 1; seed <= 1000; ++seed) {
+    const Skeleton s = graphToSkeleton(randomBranchGraph(seed, 400));
+    addExercise(s, e);
+    const TreeMesh tree = buildTreeMesh(s);
+    quads += tree.mesh.quads.size();
+    sliverGraphs += checkTopology(tree.mesh).degenerateFaces ? 1 : 0;
+    const std::size_t made = meshMadeIntersections(tree, s);
+    meshMade += made;
+    meshMadeGraphs += made ? 1 : 0;
+  }
+  std::ostringstream out;
+  out << "stems " << e.stems << ", stubs " << e.stubs << " (" << 100.0 * static_cast<double>(e.stubs) / static_cast<double>(std::max<std::size_t>(1, e.stems))
+      << " %); meshed children " << e.meshedChildren << ", near-parallel " << e.nearParallel << ", backward " << e.backward
+      << "; nodes by meshed children:";
+  for (std::size_t k = 2; k < 8; ++k) out << " " << k << ": " << e.nodesByChildren[k];
+  out << "; quads " << quads << "; graphs with slivers " << sliverGraphs << "; mesh-made pairs " << meshMade << " in " << meshMadeGraphs
+      << " graphs; " << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << " s";
+  WARN(out.str());
+}
 
 TEST_CASE("the pipe rule holds at every branch point and radii never shrink toward the root", "[graph]") {
   for (std::uint64_t seed = 1; seed <= 20; ++seed) {
