@@ -496,7 +496,14 @@ class Builder {
       splitSlab.hi = splitSlab.lo + 2.0 * splitSlab.h;
       slabsEnd = splitSlab.lo;
     }
-    const std::vector<Slab> slabs = layOutSlabs(stem, poly, tubeStart, slabsEnd);
+    std::vector<Slab> slabs = layOutSlabs(stem, poly, tubeStart, slabsEnd);
+    // A stem whose tube begins past its end (its skeleton never clears its parent) squeezes the slab of its
+    // children to nothing or less (two coincident cross sections: four sliver quads): that slab gets two start
+    // radii of room past the tip, along the last edge. Weber-Penn's tips taper to a point, so its thinnest such
+    // slab is 0.006 of its children's radius (wheat, barley) and this never fires there.
+    if (!slabs.empty() && !split && tubeStart > slabsEnd && slabs.back().hi - slabs.back().lo < 1e-3 * slabs.back().need) {
+      slabs = layOutSlabs(stem, poly, tubeStart, tubeStart + 2.0 * poly.radius(0.0));
+    }
     auto gap = [&](double at) { return gapAt(poly, at); };
 
     // Plain cross sections at the stem's own nodes outside slabs, then extra ones for even spacing.
