@@ -4,12 +4,10 @@
 #include <catch2/catch.hpp>
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include <numbers>
 
 #include <opensubdiv/bfr/refinerSurfaceFactory.h>
 #include <opensubdiv/bfr/surface.h>
-#include <opensubdiv/far/primvarRefiner.h>
 
 #include "growth/weber_penn/weber_penn.hpp"
 #include "mesh/osd_topology.hpp"
@@ -18,53 +16,18 @@
 #include "patches/acc_accuracy.hpp"
 #include "patches/limit_reference.hpp"
 #include "patches/patch_set.hpp"
+#include "acc_checks.hpp"
 #include "mesh_support.hpp"
 #include "test_support.hpp"
 
 using namespace arbor;
 using test::meshOf;
+using test::patchRadius;
 
 namespace {
 
-// Twigs end in points: the floor keeps ratios finite there (as measureAccAccuracy does).
-double radiusAt(const QuadMesh& mesh, std::size_t patch) {
-  return std::max(1e-6, static_cast<double>(mesh.radius[mesh.quads[patch][0]]));
-}
-
-// (u, v) of the point a fraction t along patch edge `edge`, which runs from corner edge to corner edge + 1.
-glm::dvec2 edgeParameter(int edge, double t) {
-  switch (edge) {
-    case 0: return {t, 0.0};
-    case 1: return {1.0, t};
-    case 2: return {1.0 - t, 1.0};
-    default: return {0.0, 1.0 - t};
-  }
-}
-
 constexpr std::array<glm::dvec2, 4> kCornerUv{{{0.0, 0.0}, {1.0, 0.0}, {1.0, 1.0}, {0.0, 1.0}}};
 constexpr std::array<std::size_t, 4> kCornerSlot{0, 3, 15, 12};  // corner i's point in the 4 x 4 grid
-
-// A primvar for OpenSubdiv's PrimvarRefiner, which builds results by weighted sums.
-struct LimitPoint {
-  glm::dvec3 p{0.0};
-  void Clear() { p = glm::dvec3(0.0); }
-  void AddWithWeight(const LimitPoint& source, double weight) { p += weight * source.p; }
-};
-
-// OpenSubdiv's exact limit position and tangents of every vertex, from its Catmull-Clark limit masks.
-struct VertexLimits {
-  std::vector<LimitPoint> position, tangent1, tangent2;
-};
-
-VertexLimits vertexLimits(const QuadMesh& mesh) {
-  const auto refiner = makeTopologyRefiner(mesh, "test");
-  std::vector<LimitPoint> source(mesh.vertexCount());
-  for (std::size_t v = 0; v < source.size(); ++v) source[v].p = glm::dvec3(mesh.positions[v]);
-  VertexLimits r{std::vector<LimitPoint>(source.size()), std::vector<LimitPoint>(source.size()),
-                 std::vector<LimitPoint>(source.size())};
-  OpenSubdiv::Far::PrimvarRefinerReal<double>(*refiner).Limit(source, r.position, r.tangent1, r.tangent2);
-  return r;
-}
 
 // A closed convex quad mesh (a trapezohedron): two poles of valence n, every other vertex of valence 3.
 QuadMesh trapezohedron(int n) {
@@ -108,7 +71,7 @@ TEST_CASE("regular ACC patches are the B-spline patches, hence OpenSubdiv's limi
       const auto indices = regularGrid(set, p);
       std::array<glm::dvec3, 16> grid;
       for (std::size_t k = 0; k < 16; ++k) grid[k] = glm::dvec3(tree.mesh.positions[indices[k]]);
-      const double radius = radiusAt(tree.mesh, p);
+      const double radius = patchRadius(tree.mesh, p);
       for (double u : {0.0, 0.2, 0.5, 0.9, 1.0}) {
         for (double v : {0.0, 0.4, 1.0}) {
           glm::dvec3 normal;
@@ -133,32 +96,10 @@ TEST_CASE("ACC patches meet their neighbours without cracks", "[acc]") {
     INFO(name);
     const TreeMesh tree = meshOf(name);
     const PatchSet set = buildPatches(tree.mesh);
-    std::vector<AccPatch> acc;
-    acc.reserve(set.size());
-    for (std::size_t p = 0; p < set.size(); ++p) acc.push_back(buildAccPatch(tree.mesh, set, p));
-    // Directed edge a -> b (patch p's edge i runs from its corner i to corner i + 1) -> (patch, edge).
-    std::map<std::pair<std::uint32_t, std::uint32_t>, std::pair<std::size_t, int>> edges;
-    for (std::size_t p = 0; p < set.size(); ++p)
-      for (int i = 0; i < 4; ++i)
-        edges[{tree.mesh.quads[p][static_cast<std::size_t>(i)], tree.mesh.quads[p][static_cast<std::size_t>((i + 1) % 4)]}] = {p, i};
-    double worst = 0.0;
-    std::size_t pairs = 0;
-    for (const auto& [edge, side] : edges) {
-      if (edge.first > edge.second) continue;  // each shared edge once
-      const auto other = edges.find({edge.second, edge.first});
-      REQUIRE(other != edges.end());
-      const auto [p, i] = side;
-      const auto [q, j] = other->second;
-      for (double t : {0.0, 0.2, 0.5, 0.7, 1.0}) {
-        // Fraction t from a towards b on p is fraction 1 - t from b towards a on q, the other way round.
-        const glm::dvec2 a = edgeParameter(i, t), b = edgeParameter(j, 1.0 - t);
-        const double d = glm::distance(evaluateBezier(acc[p].geometry, a.x, a.y), evaluateBezier(acc[q].geometry, b.x, b.y));
-        worst = std::max(worst, d / radiusAt(tree.mesh, p));
-      }
-      ++pairs;
-    }
-    CHECK(pairs == 2 * set.size());  // a closed quad mesh: 4 edges per face, each shared by two faces
-    CHECK(worst < 1e-9);
+    const test::AccCrackCheck cracks = test::accCracks(tree.mesh, set);
+    CHECK(cracks.unpaired == 0);
+    CHECK(cracks.sharedEdges == 2 * set.size());  // a closed quad mesh: 4 edges per face, each shared by two faces
+    CHECK(cracks.worst < 1e-9);
   }
 }
 
@@ -168,30 +109,30 @@ TEST_CASE("ACC corners are the exact limit positions and normals, every valence 
     INFO(name);
     const TreeMesh tree = meshOf(name);
     const PatchSet set = buildPatches(tree.mesh);
+    const std::size_t stride = set.size() > 4000 ? 7 : 1;
+    const test::AccCornerCheck exact = test::accCorners(tree.mesh, set, stride);
+    CHECK(exact.finite);
+    CHECK(exact.worstPosition < 1e-9);
+    // OpenSubdiv's limit masks (Far::PrimvarRefiner::Limit); measured 8e-12 rad.
+    CHECK(exact.worstNormal < 1e-6);
+    CHECK(exact.worstUnit < 1e-12);
+    // Derivatives of metre-sized points over a millimetre patch round at about 1e-12.
+    CHECK(exact.worstBlend < 1e-9);
+    for (std::size_t n = 0; n < corners.size(); ++n) corners[n] += exact.valences[n];
+
     const LimitSurface limit(tree.mesh);
-    const VertexLimits exact = vertexLimits(tree.mesh);
-    double worstPosition = 0.0, worstSurface = 0.0, worstNormal = 0.0, worstSurfaceNormal = 0.0;
-    for (std::size_t p = 0; p < set.size(); p += set.size() > 4000 ? 7 : 1) {
+    double worstSurface = 0.0, worstSurfaceNormal = 0.0;
+    for (std::size_t p = 0; p < set.size(); p += stride) {
       const AccPatch acc = buildAccPatch(tree.mesh, set, p);
-      const double radius = radiusAt(tree.mesh, p);
+      const double radius = patchRadius(tree.mesh, p);
       for (std::size_t i = 0; i < 4; ++i) {
-        const std::uint32_t vertex = tree.mesh.quads[p][i];
         glm::dvec3 surfaceNormal;
         const glm::dvec3 c = acc.geometry[kCornerSlot[i]];
         worstSurface = std::max(worstSurface, glm::distance(c, limit.position(static_cast<int>(p), kCornerUv[i].x, kCornerUv[i].y, &surfaceNormal)) / radius);
-        worstPosition = std::max(worstPosition, glm::distance(c, exact.position[vertex].p) / radius);
-        worstNormal = std::max(worstNormal, test::angleBetween(acc.cornerNormal[i], glm::cross(exact.tangent1[vertex].p, exact.tangent2[vertex].p)));
         worstSurfaceNormal = std::max(worstSurfaceNormal, test::angleBetween(acc.cornerNormal[i], surfaceNormal));
-        CHECK(glm::length(acc.cornerNormal[i]) == Approx(1.0).epsilon(1e-12));
-        // Derivatives of metre-sized points over a millimetre patch round at about 1e-12.
-        CHECK(test::angleBetween(accNormal(acc, kCornerUv[i].x, kCornerUv[i].y), acc.cornerNormal[i]) < 1e-9);
-        ++corners[std::min<std::size_t>(set.valence[p][i], 6)];
       }
     }
     CHECK(worstSurface < 1e-9);
-    CHECK(worstPosition < 1e-9);
-    // OpenSubdiv's limit masks (Far::PrimvarRefiner::Limit); measured 8e-12 rad.
-    CHECK(worstNormal < 1e-6);
     // Bfr::Surface (LimitSurface) with its default approximation level 2 represents the corner of an
     // extraordinary face by an approximate end patch: its normal there is off by up to 2.1e-3 rad (measured),
     // shrinking as the level rises (4e-5 at level 10). Same sign and close: a check of orientation only.
@@ -315,7 +256,7 @@ TEST_CASE("extraordinary ACC patches stay within the measured distance of the li
       const AccPatch acc = buildAccPatch(tree.mesh, set, p);
       for (double u : {0.0, 0.25, 0.5, 0.75, 1.0})
         for (double v : {0.0, 0.25, 0.5, 0.75, 1.0})
-          away = std::max(away, glm::distance(evaluateBezier(acc.geometry, u, v), limit.position(static_cast<int>(p), u, v)) / radiusAt(tree.mesh, p));
+          away = std::max(away, glm::distance(evaluateBezier(acc.geometry, u, v), limit.position(static_cast<int>(p), u, v)) / patchRadius(tree.mesh, p));
     }
     CHECK(away > 0.01);  // the class is not empty and ACC is not the limit there
     CHECK(away < b.awayMax);
@@ -371,7 +312,7 @@ TEST_CASE("the accuracy reference is exact on the quarter grid that 5 samples pe
       const double uv[2] = {u, v};
       double q[3];
       surface.Evaluate(uv, patchPoints.data(), xyz, q);
-      return glm::distance(glm::dvec3(q[0], q[1], q[2]), limit.position(static_cast<int>(p), u, v)) / radiusAt(tree.mesh, p);
+      return glm::distance(glm::dvec3(q[0], q[1], q[2]), limit.position(static_cast<int>(p), u, v)) / patchRadius(tree.mesh, p);
     };
     for (double u : {0.0, 0.25, 0.5, 0.75, 1.0})
       for (double v : {0.0, 0.25, 0.5, 0.75, 1.0}) onGrid = std::max(onGrid, error(u, v));

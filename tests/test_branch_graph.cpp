@@ -3,6 +3,7 @@
 // formats read back byte for byte, and random graphs meshing to closed all-quad 2-manifolds.
 #include <catch2/catch.hpp>
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <map>
@@ -17,9 +18,12 @@
 #include "growth/weber_penn/weber_penn.hpp"
 #include "mesh/mesh_checks.hpp"
 #include "mesh/osd_topology.hpp"
+#include "mesh/self_intersection.hpp"
 #include "mesh/tree_mesh.hpp"
 #include "patches/acc.hpp"
+#include "patches/acc_accuracy.hpp"
 #include "patches/patch_set.hpp"
+#include "acc_checks.hpp"
 #include "test_support.hpp"
 
 using namespace arbor;
@@ -59,8 +63,10 @@ std::string refusal(Work&& work) {
   return "";
 }
 
-// What a graph's conversion and mesh must hold; the first thing that fails, or "" when all hold.
-std::string meshProblem(const BranchGraph& g, bool osd, std::size_t& degenerate) {
+// What a graph's conversion and mesh must hold; the first thing that fails, or "" when all hold. `deep` adds
+// OpenSubdiv's acceptance and the ACC checks of test_acc (no cracks, corners at the exact limit, regular
+// patches exact); `extraordinaryMax` receives the extraordinary patches' largest distance from the limit.
+std::string meshProblem(const BranchGraph& g, bool deep, double& extraordinaryMax) {
   const Skeleton s = graphToSkeleton(g);
   if (!structuralProblems(s).empty()) return "skeleton: " + structuralProblems(s).front();
   TreeMesh tree;
@@ -76,7 +82,7 @@ std::string meshProblem(const BranchGraph& g, bool osd, std::size_t& degenerate)
   if (r.nonManifoldEdges) out << r.nonManifoldEdges << " non-manifold edges; ";
   if (r.misorientedEdges) out << r.misorientedEdges << " misoriented edges; ";
   if (r.nonManifoldVertices) out << r.nonManifoldVertices << " non-manifold vertices; ";
-  degenerate = r.degenerateFaces;
+  if (r.degenerateFaces) out << r.degenerateFaces << " degenerate (sliver) quads; ";
   if (r.components != 1) out << r.components << " components; ";
   if (r.eulerCharacteristic != 2) out << "Euler characteristic " << r.eulerCharacteristic << "; ";
   if (!(r.signedVolume > 0.0)) out << "signed volume " << r.signedVolume << "; ";
@@ -89,17 +95,91 @@ std::string meshProblem(const BranchGraph& g, bool osd, std::size_t& degenerate)
   }
   if (fallback) out << fallback << " fallback patches; ";
   if (large) out << large << " patches over 32 points; ";
-  if (osd && out.str().empty()) {
+  if (deep && out.str().empty()) {
     try {
       makeTopologyRefiner(tree.mesh, "graph");
+      const test::AccCrackCheck cracks = test::accCracks(tree.mesh, set);
+      if (cracks.unpaired || cracks.sharedEdges != 2 * set.size()) out << "ACC: " << cracks.unpaired << " unpaired edges; ";
+      if (!(cracks.worst < 1e-9)) out << "ACC: cracks of " << cracks.worst << " radii; ";
+      const test::AccCornerCheck corners = test::accCorners(tree.mesh, set);
+      if (!corners.finite) out << "ACC: a Bezier point or corner normal not finite; ";
+      if (!(corners.worstPosition < 1e-9)) out << "ACC: a corner " << corners.worstPosition << " radii off the limit; ";
+      if (!(corners.worstNormal < 1e-6)) out << "ACC: a corner normal " << corners.worstNormal << " rad off the limit's; ";
+      if (!(corners.worstUnit < 1e-12) || !(corners.worstBlend < 1e-9)) out << "ACC: corner normals not unit or not blended exactly; ";
+      const AccAccuracy accuracy = measureAccAccuracy(tree.mesh, set);
+      if (!(accuracy.regularMax < 1e-5)) out << "ACC: a regular patch " << accuracy.regularMax << " radii off the limit; ";
+      if (!std::isfinite(accuracy.extraordinaryMax)) out << "ACC: an extraordinary patch not finite; ";
+      extraordinaryMax = std::max(extraordinaryMax, accuracy.extraordinaryMax);
     } catch (const std::exception& e) {
-      out << "OpenSubdiv: " << e.what() << "; ";
+      out << "OpenSubdiv or ACC: " << e.what() << "; ";
     }
   }
   return out.str();
 }
 
+// What the random graphs exercise: stems and stubs, nodes by meshed children (the continuing stem counts as one),
+// meshed children leaving near-parallel (within 15 degrees of the parent or of a meshed sibling) or backward.
+struct GraphExercise {
+  std::size_t stems = 0, stubs = 0, nearParallel = 0, backward = 0, meshedChildren = 0;
+  std::array<std::size_t, 8> nodesByChildren{};  // index: meshed children, 7 = more
+};
+
+void addExercise(const Skeleton& s, GraphExercise& e) {
+  std::vector<std::vector<std::size_t>> at(s.nodes.size());
+  for (std::size_t i = 0; i < s.stems.size(); ++i) {
+    const SkeletonStem& st = s.stems[i];
+    if (st.attachNode < 0) continue;
+    ++e.stems;
+    e.stubs += st.stub ? 1 : 0;
+    if (!st.stub) at[static_cast<std::size_t>(st.attachNode)].push_back(i);
+  }
+  auto firstDirection = [&](const SkeletonStem& st) {
+    return glm::normalize(s.nodes[static_cast<std::size_t>(st.firstNode)].world.position -
+                          s.nodes[static_cast<std::size_t>(st.attachNode)].world.position);
+  };
+  for (std::size_t n = 0; n < s.nodes.size(); ++n) {
+    if (at[n].empty()) continue;
+    const SkeletonNode& node = s.nodes[n];
+    const bool continues = node.kind != NodeKind::Root && node.kind != NodeKind::Tip;
+    ++e.nodesByChildren[std::min<std::size_t>(7, at[n].size() + (continues ? 1 : 0))];
+    for (std::size_t a : at[n]) {
+      const Vec3 d = firstDirection(s.stems[a]);
+      ++e.meshedChildren;
+      const double toParent = node.kind == NodeKind::Root ? 0.0 : std::acos(std::clamp(glm::dot(d, node.world.direction()), -1.0, 1.0));
+      bool parallel = node.kind != NodeKind::Root && toParent < 15.0 * 3.14159265 / 180.0;
+      for (std::size_t b : at[n])
+        if (b != a) parallel = parallel || glm::dot(d, firstDirection(s.stems[b])) > std::cos(15.0 * 3.14159265 / 180.0);
+      e.nearParallel += parallel ? 1 : 0;
+      e.backward += toParent > 0.5 * 3.14159265 ? 1 : 0;
+    }
+  }
+}
+
 }  // namespace
+
+TEST_CASE("what 1,000 random graphs exercise, slivers and mesh-made crossings (measured, not asserted)", "[graph][measure][.]") {
+  GraphExercise e;
+  std::size_t sliverGraphs = 0, meshMade = 0, meshMadeGraphs = 0, quads = 0;
+  const auto start = std::chrono::steady_clock::now();
+  for (std::uint64_t seed = 1; seed <= 1000; ++seed) {
+    const Skeleton s = graphToSkeleton(randomBranchGraph(seed, 400));
+    addExercise(s, e);
+    const TreeMesh tree = buildTreeMesh(s);
+    quads += tree.mesh.quads.size();
+    sliverGraphs += checkTopology(tree.mesh).degenerateFaces ? 1 : 0;
+    const std::size_t made = meshMadeIntersections(tree, s);
+    meshMade += made;
+    meshMadeGraphs += made ? 1 : 0;
+  }
+  std::ostringstream out;
+  out << "stems " << e.stems << ", stubs " << e.stubs << " (" << 100.0 * static_cast<double>(e.stubs) / static_cast<double>(std::max<std::size_t>(1, e.stems))
+      << " %); meshed children " << e.meshedChildren << ", near-parallel " << e.nearParallel << ", backward " << e.backward
+      << "; nodes by meshed children:";
+  for (std::size_t k = 2; k < 8; ++k) out << " " << k << ": " << e.nodesByChildren[k];
+  out << "; quads " << quads << "; graphs with slivers " << sliverGraphs << "; mesh-made pairs " << meshMade << " in " << meshMadeGraphs
+      << " graphs; " << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << " s";
+  WARN(out.str());
+}
 
 TEST_CASE("the pipe rule holds at every branch point and radii never shrink toward the root", "[graph]") {
   for (std::uint64_t seed = 1; seed <= 20; ++seed) {
@@ -373,26 +453,19 @@ TEST_CASE("bad skeleton files are refused naming the file and field", "[graph][j
 }
 
 TEST_CASE("1,000 random graphs of 400 internodes mesh to closed, outward, all-quad 2-manifolds within 32-point patches", "[graph][mesh]") {
+  // Every graph: topology, no sliver, valences, patch sizes, no fallback; every tenth also OpenSubdiv and ACC.
   const auto start = std::chrono::steady_clock::now();
   std::vector<std::string> failures;
-  std::vector<std::uint64_t> slivers;
+  double extraordinaryMax = 0.0;
   for (std::uint64_t seed = 1; seed <= 1000; ++seed) {
     const BranchGraph g = randomBranchGraph(seed, 400);
-    std::size_t degenerate = 0;
-    const std::string problem = meshProblem(g, seed % 10 == 0, degenerate);
+    const std::string problem = meshProblem(g, seed % 10 == 0, extraordinaryMax);
     if (!problem.empty()) failures.push_back("seed " + std::to_string(seed) + ": " + problem);
-    if (degenerate) slivers.push_back(seed);
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::string list;
   for (std::size_t i = 0; i < std::min<std::size_t>(failures.size(), 30); ++i) list += failures[i] + "\n";
   INFO(failures.size() << " of 1000 failed in " << seconds << " s:\n" << list);
   CHECK(failures.empty());
-  // Known mesher limit (docs/graph-format.md): where a stem's tube begins at or past its end (a trunk leaving
-  // the root hub along its axis, children attached before the tube), two cross sections nearly coincide and a
-  // band of four sliver quads (area < 1e-4 of its edge squared) remains: 20 of these 1,000 graphs when measured.
-  std::string seeds;
-  for (std::uint64_t s : slivers) seeds += std::to_string(s) + " ";
-  INFO("graphs with sliver quads: " << seeds);
-  CHECK(slivers.size() <= 20);
+  WARN("1,000 random graphs in " << seconds << " s; extraordinary ACC patches at most " << extraordinaryMax << " radii from the limit");
 }

@@ -39,6 +39,7 @@ struct PortStart {
   bool top = false;   // the parent's top cross section (a split or a sub-box): leave along the child
   Vec3 parentAxis{0.0};     // the slab's axis: a side child's tube starts once clear of the parent
   double parentReach = 0.0; // distance of the parent's corners from that axis
+  double slabReach = 0.0;   // the same for every port, also past a split and on the hub (where parentReach is 0)
   std::size_t parentFacesBegin = 0, parentFacesEnd = 0;  // the parent stem's quads, complete by then
   // A child attached before its parent's tube begins (moved to the first slab) also clears its grandparent.
   bool clearGrandparent = false;
@@ -221,21 +222,22 @@ class Builder {
   void buildStemFaces(int stem, const PortStart* start) {
     const StemPolyline poly(sk_, stem);
     Ring last;
-    double sLo = 0.0;
+    double sLo = 0.0, sUnclear = 0.0;
     if (!start) {
       const RingFrame frame = frameFromHint(poly.startDirection(), Vec3(1, 0, 0));
       last = emitRing(stem, poly.position(0.0), frame, poly.radius(0.0), 0.0, 0.0);
       if (opt_.openBase) out_.mesh.openBoundary.assign(last.v.begin(), last.v.end());
       else addQuad(last.v[3], last.v[2], last.v[1], last.v[0]);
     } else {
-      last = leavePort(stem, poly, *start, sLo);
+      last = leavePort(stem, poly, *start, sLo, sUnclear);
     }
-    continueStem(stem, poly, last, sLo, start);
+    continueStem(stem, poly, last, sLo, sUnclear, start);
   }
 
   // The child's first cross section sits just outside the port, leaving between the port's normal and
   // the child's direction; a child that points backwards leaves straight out first (backward connection).
-  Ring leavePort(int stem, const StemPolyline& poly, const PortStart& start, double& sLo) {
+  // sLo: where the tube may begin; sUnclear: where it would without keeping its first band off the parent.
+  Ring leavePort(int stem, const StemPolyline& poly, const PortStart& start, double& sLo, double& sUnclear) {
     const auto& q = start.port;
     Ring port = portRing(q);
     const Vec3 center = port.center;
@@ -275,7 +277,7 @@ class Builder {
           for (int k = 0; k < 4; ++k) addUvw(q[static_cast<std::size_t>(k)], k, port.tex);  // child-then-parent averaging
           const Ring exit = emitRing(stem, c, frame, exitRadius, port.tex + barkTextureAdvance(glm::distance(c, center), exitRadius), s);
           band(port, exit);
-          sLo = s;
+          sLo = sUnclear = s;
           return exit;
         }
       }
@@ -317,6 +319,7 @@ class Builder {
     const auto offsets = ringOffsets(exitFrame, exitRadius * opt_.limitCompensation);
     const std::array<Vec3, 4> exitCorners{exitCenter + offsets[0], exitCenter + offsets[1], exitCenter + offsets[2],
                                           exitCenter + offsets[3]};
+    sUnclear = sLo;
     sLo = clearOfParent(poly, start, exitFrame, exitCorners, sLo, 0.25 * std::max(portRadius, rc));
     const Ring exit = emitRing(stem, exitCenter, exitFrame, exitRadius, port.tex + barkTextureAdvance(e, exitRadius));
     band(port, exit);
@@ -472,7 +475,21 @@ class Builder {
     return slabs;
   }
 
-  void continueStem(int stem, const StemPolyline& poly, Ring last, double sLo, const PortStart* start) {
+  // Whether a child's skeleton, once out of its parent's reach about the branch point, comes back within it.
+  static bool runsBackThrough(const StemPolyline& poly, const PortStart& start) {
+    const double reach = start.slabReach;
+    double farthest = 0.0;
+    for (int i = 1; i < poly.pointCount(); ++i) {
+      const Vec3 a = poly.position(poly.arcLength(i - 1)), b = poly.position(poly.arcLength(i));
+      farthest = std::max(farthest, glm::distance(a, start.branchPoint));
+      const Vec3 d = b - a;
+      const double t = glm::dot(d, d) > 0.0 ? std::clamp(glm::dot(start.branchPoint - a, d) / glm::dot(d, d), 0.0, 1.0) : 0.0;
+      if (farthest > reach && glm::distance(a + t * d, start.branchPoint) < reach) return true;
+    }
+    return false;
+  }
+
+  void continueStem(int stem, const StemPolyline& poly, Ring last, double sLo, double sUnclear, const PortStart* start) {
     const SkeletonStem& st = sk_.stems[static_cast<std::size_t>(stem)];
     const int lastNode = st.firstNode + st.nodeCount - 1;
     const bool split = sk_.nodes[static_cast<std::size_t>(lastNode)].kind == NodeKind::Split &&
@@ -480,7 +497,7 @@ class Builder {
     const double sEnd = poly.length();
 
     // Where slabs may lie: after the first cross section, and before the tip or the split slab.
-    const double tubeStart = start ? sLo + 0.25 * poly.radius(sLo) : 0.0;
+    double tubeStart = start ? sLo + 0.25 * poly.radius(sLo) : 0.0;
     Slab splitSlab;
     double slabsEnd = sEnd;
     if (split) {
@@ -496,7 +513,24 @@ class Builder {
       splitSlab.hi = splitSlab.lo + 2.0 * splitSlab.h;
       slabsEnd = splitSlab.lo;
     }
-    const std::vector<Slab> slabs = layOutSlabs(stem, poly, tubeStart, slabsEnd);
+    std::vector<Slab> slabs = layOutSlabs(stem, poly, tubeStart, slabsEnd);
+    // A stem whose tube begins past its end squeezes the slab of its children to nothing or less (two coincident
+    // cross sections: four sliver quads, or a slab upside down). Neither repair below happens on a Weber-Penn tree
+    // (22 species at seeds 1-5): its tips taper to a point, so its thinnest such slab is 0.006 of its children's
+    // radius (wheat, barley), and its stems do not turn back through their parents.
+    auto squeezed = [&] {
+      return !slabs.empty() && !split && tubeStart > slabsEnd && slabs.back().hi - slabs.back().lo < 1e-3 * slabs.back().need;
+    };
+    if (!slabs.empty() && !split && tubeStart > slabsEnd && sUnclear < sLo && runsBackThrough(poly, *start)) {
+      // Its first band could not clear the parent anywhere because its skeleton turns back through the parent
+      // (a trunk through its hub): that crossing is the skeleton's, so the tube begins where it would without
+      // clearing, on its skeleton, rather than the whole stem becoming one cone with its children past its tip.
+      sLo = sUnclear;
+      tubeStart = sLo + 0.25 * poly.radius(sLo);
+      slabs = layOutSlabs(stem, poly, tubeStart, slabsEnd);
+    }
+    // Its skeleton never leaves the parent: the slab gets two start radii of room past the tip, along the last edge.
+    if (squeezed()) slabs = layOutSlabs(stem, poly, tubeStart, tubeStart + 2.0 * poly.radius(0.0));
     auto gap = [&](double at) { return gapAt(poly, at); };
 
     // Plain cross sections at the stem's own nodes outside slabs, then extra ones for even spacing.
@@ -676,14 +710,18 @@ class Builder {
       ports.emplace_back(q, std::move(stems));
     }
     const Vec3 branchPoint = joint.center;
-    if (top && a.top >= 0) {
-      deferred_->emplace_back(children[static_cast<std::size_t>(a.top)], withGrandparent(PortStart{top->v, branchPoint, true, axis, 0.0}));
-    }
+    const double slabReach = std::max(lo.radius, hi.radius) * opt_.limitCompensation;
+    auto portStart = [&](const std::array<std::uint32_t, 4>& q, bool onTop, double reach) {
+      PortStart p{q, branchPoint, onTop, axis, reach};
+      p.slabReach = slabReach;
+      return withGrandparent(p);
+    };
+    if (top && a.top >= 0) deferred_->emplace_back(children[static_cast<std::size_t>(a.top)], portStart(top->v, true, 0.0));
     // Past a split the parent's axis runs on through the clone on top, not the parent: clones need no clearance.
-    const double reach = top ? 0.0 : std::max(lo.radius, hi.radius) * opt_.limitCompensation;
+    const double reach = top ? 0.0 : slabReach;
     for (auto& [q, stems] : ports) {
       if (stems.size() == 1) {
-        deferred_->emplace_back(stems[0], withGrandparent(PortStart{q, branchPoint, false, axis, reach}));
+        deferred_->emplace_back(stems[0], portStart(q, false, reach));
       } else {
         ++joint.subBoxes;
         subBox(parentStem, node, q, stems);
