@@ -10,6 +10,7 @@
 #include "growth/growth_model.hpp"
 #include "mesh/tree_mesh.hpp"
 #include "patches/acc_accuracy.hpp"
+#include "tree/build_tree.hpp"
 #include "patches/patch_set.hpp"
 
 namespace arbor::cli {
@@ -37,8 +38,9 @@ int runAccuracy(const AccuracyOptions& o) {
     GrowthOptions growth;
     growth.seed = o.seed;
     growth.levels = o.levels;
-    const TreeMesh tree = buildTreeMesh(loadTreeArgument(name, nullptr, o.angles).grow(growth));
-    const PatchSet set = buildPatches(tree.mesh);
+    const TreeGeometry built = buildTree(loadTreeArgument(name, nullptr, o.angles).grow(growth));
+    const TreeMesh& tree = built.mesh;
+    const PatchSet& set = built.patches;
     const AccAccuracy a = measureAccAccuracy(tree.mesh, set, o.maxPatches, o.samples);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::printf("%-22s %9zu %9zu %9zu %11.3e %11.3e %11.3e %11.3e %9.2f\n", name.c_str(), tree.mesh.quads.size(),

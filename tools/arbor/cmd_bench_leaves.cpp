@@ -13,6 +13,7 @@
 #include "commands.hpp"
 #include "common/atomic_file.hpp"
 #include "growth/growth_model.hpp"
+#include "tree/build_tree.hpp"
 #include "mesh/tree_mesh.hpp"
 #include "render_options.hpp"
 
@@ -82,10 +83,12 @@ int runBenchLeaves(const BenchLeavesOptions& o) {
     throw InputError(std::to_string(most), "--counts", o.species + " grows at most " + std::to_string(skeleton.leaves.size()) +
                                                            " leaves (at " + std::to_string(leafiestLevels) + " levels); give counts up to that");
   }
-  MeshOptions meshOptions;
-  meshOptions.levels = source.levels();
-  const TreeMesh tree = buildTreeMesh(skeleton, meshOptions);
-  const PatchSet patches = buildPatches(tree.mesh);
+  // The tree's own levels meshed; the deeper ones grown for their leaves are not drawn as fake branches here.
+  BuildOptions build;
+  build.mesh.levels = source.levels();
+  const TreeGeometry built = buildTree(skeleton, build);
+  const TreeMesh& tree = built.mesh;
+  const PatchSet& patches = built.patches;
 
   vk::VulkanContext context(vulkanOptions(o.validation, o.device));
   render::RenderSession session(context, width, height, VK_SAMPLE_COUNT_1_BIT, render::loadTreeTextures(assetDirectory()));

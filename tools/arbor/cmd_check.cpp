@@ -12,6 +12,7 @@
 #include "common/json_writer.hpp"
 #include "common/text_util.hpp"
 #include "growth/growth_model.hpp"
+#include "tree/build_tree.hpp"
 #include "mesh/self_intersection.hpp"
 #include "mesh/tree_mesh.hpp"
 #include "obj_quads.hpp"
@@ -51,7 +52,7 @@ Checked load(const CheckOptions& o) {
     growth.seed = o.seed;
     growth.levels = o.levels;
     c.skeleton = source.grow(growth);
-    c.tree = buildTreeMesh(c.skeleton);
+    c.tree = buildTree(c.skeleton, BuildOptions{{}, false}).mesh;
     c.grown = true;
     c.title = source.name() + ", seed " + std::to_string(c.skeleton.seed) + ", " + std::to_string(c.skeleton.levels) + " levels";
   }
