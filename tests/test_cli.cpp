@@ -63,7 +63,7 @@ TEST_CASE("bad species files exit with 2, name file and field, and leave the out
   CHECK_FALSE(fs::exists(arbor::test::tempPath("x.json")));
 }
 
-TEST_CASE("species --list names the growth models and each preset's model; a file naming no known model exits 2", "[cli]") {
+TEST_CASE("species --list names the growth models and each preset's model, a file naming no known model exits 2", "[cli]") {
   const Result list = run("species --list");
   CHECK(list.exitCode == 0);
   CHECK_THAT(list.output, Catch::Contains("growth models:") && Catch::Contains("weber-penn") && Catch::Contains("presets in"));
@@ -76,7 +76,7 @@ TEST_CASE("species --list names the growth models and each preset's model; a fil
   CHECK_FALSE(fs::exists(arbor::test::tempPath("o.json")));
 }
 
-TEST_CASE("mesh takes a branch graph or a skeleton file; a skeleton meshes exactly as the tree it was written from", "[cli][graph]") {
+TEST_CASE("mesh takes a branch graph or a skeleton file, a skeleton meshes exactly as the tree it was written from", "[cli][graph]") {
   // A trunk of five internodes, then a node with four children (one nearly along the trunk, one backward).
   nlohmann::json doc = {{"format", "arbor-graph/1"}, {"nodes", nlohmann::json::array()}};
   auto add = [&](int parent, double x, double y, double z) {

@@ -54,7 +54,7 @@ TEST_CASE("every preset grows the skeleton it grew before growth models existed 
   }
 }
 
-TEST_CASE("a model file names its model; none named is Weber-Penn; an unknown one is refused naming those allowed", "[growth-models]") {
+TEST_CASE("a model file names its model, none named is Weber-Penn, an unknown one is refused naming those allowed", "[growth-models]") {
   nlohmann::ordered_json doc = nlohmann::ordered_json::parse(presetText("palm"));
   doc.erase("model");
   const TreeModel plain = readModelFile(doc.dump(), "palm.json");
@@ -77,7 +77,7 @@ TEST_CASE("a model file names its model; none named is Weber-Penn; an unknown on
   CHECK_THROWS_WITH(readSpeciesJson(doc.dump(), "m.json"), Catch::Contains("model"));
 }
 
-TEST_CASE("an Arbaro XML file is a Weber-Penn model; natural angles are a read option", "[growth-models]") {
+TEST_CASE("an Arbaro XML file is a Weber-Penn model, natural angles are a read option", "[growth-models]") {
   const std::string xml = readFile(std::string(TEST_DATA_DIR) + "/small-arbaro.xml");
   const TreeModel file = readModelFile(xml, "small.xml");
   const TreeModel natural = readModelFile(xml, "small.xml", ModelReadOptions{true, nullptr});

@@ -50,7 +50,7 @@ TEST_CASE("distance thins the leaves gradually, the farther the fewer", "[render
   CHECK(previous < 0.5 * 2.0 * leaves);  // and far away most are gone
 }
 
-TEST_CASE("leaves with the sun behind them glow yellow-green; self-shadowing darkens the crown", "[render][leaves]") {
+TEST_CASE("leaves with the sun behind them glow yellow-green, self-shadowing darkens the crown", "[render][leaves]") {
   test::TreeScene scene("quaking-aspen", 3, 0, 200, 250);
   const render::Camera camera = scene.framed();
   render::RenderSettings settings;

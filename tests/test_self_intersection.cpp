@@ -67,7 +67,7 @@ Skeleton crossingSkeleton(double r) {
 
 }  // namespace
 
-TEST_CASE("two quads crossing each other are one pair; two apart are none", "[mesh][self-intersection]") {
+TEST_CASE("two quads crossing each other are one pair, two apart are none", "[mesh][self-intersection]") {
   QuadSoup s;
   s.quad(Vec3(-1, -1, 0), Vec3(1, -1, 0), Vec3(1, 1, 0), Vec3(-1, 1, 0));
   s.quad(Vec3(0, -0.5, -1), Vec3(0, 0.5, -1), Vec3(0, 0.5, 1), Vec3(0, -0.5, 1));
@@ -86,7 +86,7 @@ TEST_CASE("two quads crossing each other are one pair; two apart are none", "[me
   CHECK(pairs(apart.mesh) == 0);
 }
 
-TEST_CASE("a quad folded back over its neighbour across their shared edge is a fold; one bent is not", "[mesh][self-intersection]") {
+TEST_CASE("a quad folded back over its neighbour across their shared edge is a fold, one bent is not", "[mesh][self-intersection]") {
   for (double angle : {180.0, 90.0, 20.0, 5.0, 0.0}) {
     INFO("dihedral angle " << angle << " degrees");
     QuadSoup s;
@@ -140,7 +140,7 @@ TEST_CASE("a closed cube has no intersecting quads", "[mesh][self-intersection]"
   CHECK_FALSE(r.classified);
 }
 
-TEST_CASE("two stems whose skeleton capsules cross make a skeleton-made pair; a fold stays mesh-made", "[mesh][self-intersection]") {
+TEST_CASE("two stems whose skeleton capsules cross make a skeleton-made pair, a fold stays mesh-made", "[mesh][self-intersection]") {
   const double r = 0.05;
   const Skeleton skeleton = crossingSkeleton(r);
   TreeMesh tree;

@@ -158,7 +158,7 @@ TEST_CASE("one more level keeps the lower levels of the same seed (breadth-first
   }
 }
 
-TEST_CASE("the same seed gives byte-identical output; another seed another tree", "[skeleton]") {
+TEST_CASE("the same seed gives byte-identical output, another seed another tree", "[skeleton]") {
   const SpeciesParams p = test::loadPreset("black-tupelo");
   const std::string a = writeSkeletonJson(grow(p, 11)), b = writeSkeletonJson(grow(p, 11));
   CHECK(a == b);
