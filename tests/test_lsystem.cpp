@@ -316,6 +316,9 @@ TEST_CASE("the l-system model's parameters edit the grammar and re-derive", "[ls
                readLsystemModel(text, "x.lsys", o);
              }),
              Catch::Contains("no angle rules"));
+  GrowthOptions tiny;
+  tiny.limits.nodes = 5;
+  CHECK_THROWS_AS(model.grow(tiny), GenerationError);  // counted before the turtle runs
   GrowthOptions seeded;
   seeded.seed = 3;
   const std::string stochastic = readText(std::string(ARBOR_ASSET_DIR) + "/lsystems/fig-1-27.lsys");

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <limits>
 #include <sstream>
 
 #include "common/text_util.hpp"
@@ -42,7 +43,8 @@ class LsystemParams final : public ModelParams {
     GraphOptions graph;
     graph.species = system_.name;
     graph.tipRadius = system_.tipRadius;
-    Skeleton s = graphToSkeleton(lsystemGraph(system_, options.seed), graph);
+    // Internodes are counted before the turtle runs: the conversion merges about ten into one skeleton node.
+    Skeleton s = graphToSkeleton(lsystemGraph(system_, options.seed, 10 * options.limits.nodes), graph);
     s.seed = options.seed;
     if (s.nodes.size() > options.limits.nodes)
       throw GenerationError("l-system '" + system_.name + "': " + std::to_string(s.nodes.size()) + " skeleton nodes, more than the limit of " +
@@ -191,10 +193,16 @@ class LsystemParams final : public ModelParams {
 
 }  // namespace
 
-BranchGraph lsystemGraph(const Lsystem& system, std::uint64_t seed) {
+BranchGraph lsystemGraph(const Lsystem& system, std::uint64_t seed, std::size_t maxInternodes) {
   lsys::DeriveOptions options;
   options.seed = derivationSeed(system, seed);
-  lsys::Interpretation drawn = lsys::interpret(lsys::derive(system, options), lsys::turtleSettings(system));
+  const lsys::ModuleString str = lsys::derive(system, options);
+  const auto internodes = static_cast<std::size_t>(
+      std::count_if(str.modules.begin(), str.modules.end(), [](const lsys::Module& m) { return m.symbol == 'F'; }));
+  if (internodes > maxInternodes)
+    throw GenerationError("l-system '" + system.name + "': " + std::to_string(internodes) + " internodes (F), more than " +
+                          std::to_string(maxInternodes) + " (ten per skeleton node of the limit; lower n)");
+  lsys::Interpretation drawn = lsys::interpret(str, lsys::turtleSettings(system));
   if (drawn.segments == 0) throw InputError(system.file, "axiom", "the derived string draws no internode (no F outside a polygon)");
   BranchGraph graph = std::move(drawn.graph);
   if (system.size > 0) scaleGraph(graph, system.size);

@@ -1,5 +1,6 @@
 #pragma once
 // L-systems behind the growth-model interface: a .lsys grammar as a TreeModel (docs/lsystem-format.md).
+#include <cstdint>
 #include <string>
 
 #include "growth/graph/branch_graph.hpp"
@@ -17,8 +18,8 @@ TreeModel readLsystemModel(const std::string& text, const std::string& file, con
 // The grammar behind a model with its edits; nullptr when another model grew it.
 const lsys::Lsystem* lsystemOf(const TreeModel& model);
 
-// The grammar's derived string, interpreted and converted as grow() does, without the skeleton: the graph
-// (scaled by `size:`), for tools and tests.
-BranchGraph lsystemGraph(const lsys::Lsystem& system, std::uint64_t seed);
+// The grammar derived (seed: the file's + seed - 1) and interpreted as grow() does, before the skeleton: the
+// branch graph scaled by `size:`, for tools and tests. A GenerationError past maxInternodes drawn (F modules).
+BranchGraph lsystemGraph(const lsys::Lsystem& system, std::uint64_t seed, std::size_t maxInternodes = SIZE_MAX);
 
 }  // namespace arbor
