@@ -182,7 +182,9 @@ class LsystemParams final : public ModelParams {
   }
 
   static std::string trailingComment(const std::string& line) {
-    const std::size_t start = line.rfind("#define", 0) == 0 ? line.find('#', 1) : line.find('#');
+    const std::size_t first = line.find_first_not_of(" \t");
+    const bool define = first != std::string::npos && line.compare(first, 7, "#define") == 0;
+    const std::size_t start = define ? line.find('#', first + 1) : line.find('#');
     return start == std::string::npos ? "" : "  " + line.substr(start);
   }
 
