@@ -117,6 +117,35 @@ TEST_CASE("mesh takes a branch graph or a skeleton file, a skeleton meshes exact
   CHECK_THAT(species.output, Catch::Contains("not a model file"));
 }
 
+TEST_CASE("lsystem derives a grammar, draws it as SVG, and refuses bad grammars and runaway derivations with 2", "[cli][lsystem]") {
+  const std::string svg = arbor::test::tempPath("fig-1-24a.svg");
+  const Result r = run("lsystem fig-1-24a --out " + svg);
+  CHECK(r.exitCode == 0);
+  CHECK_THAT(r.output, Catch::Contains("7811 modules") && Catch::Contains("3125 internodes"));
+  const std::string drawing = arbor::readFile(svg);
+  CHECK(drawing.rfind("<svg", 0) == 0);
+  CHECK(drawing.find("<path") != std::string::npos);
+
+  const std::string bad = writeTemp("bad.lsys", "n: 3\naxiom: F\nF -> F[+F(\n");
+  const Result syntax = run("lsystem " + bad + " --out " + arbor::test::tempPath("bad.svg"));
+  CHECK(syntax.exitCode == 2);
+  CHECK_THAT(syntax.output, Catch::Contains("bad.lsys") && Catch::Contains("line 3"));
+  CHECK_FALSE(fs::exists(arbor::test::tempPath("bad.svg")));
+
+  const std::string txt = arbor::test::tempPath("runaway.txt");
+  const Result runaway = run("lsystem fig-1-24a --n 12 --max-modules 100000 --out " + txt);
+  CHECK(runaway.exitCode == 2);
+  CHECK_FALSE(fs::exists(txt));
+
+  // The same grammar is a tree for every command that takes one.
+  const std::string obj = arbor::test::tempPath("bush.obj");
+  const Result mesh = run("generate fig-1-25 --out " + obj);
+  CHECK(mesh.exitCode == 0);
+  CHECK_THAT(mesh.output, Catch::Contains("closed 2-manifold, 1 piece(s)"));
+  const Result list = run("species --list");
+  CHECK_THAT(list.output, Catch::Contains("l-system") && Catch::Matches("(.|\\n)*fig-2-6a +l-system(.|\\n)*"));
+}
+
 TEST_CASE("unknown presets list the presets on offer", "[cli]") {
   const Result r = run("generate no-such-tree --out " + arbor::test::tempPath("n.json"));
   CHECK(r.exitCode == 2);

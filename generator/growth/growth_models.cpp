@@ -5,6 +5,7 @@
 
 #include "common/input_file.hpp"
 #include "common/text_util.hpp"
+#include "lsystem/lsystem_model.hpp"
 #include "weber_penn/species_io.hpp"
 #include "weber_penn/weber_penn_model.hpp"
 
@@ -12,9 +13,16 @@ namespace arbor {
 
 namespace {
 
-const std::array<GrowthModelInfo, 1> kModels{{
+// An L-system file is its grammar: .lsys text, whatever reader asked.
+TreeModel readLsystem(const std::string& text, const std::string& file, bool, const ModelReadOptions& options) {
+  return readLsystemModel(text, file, options);
+}
+
+const std::array<GrowthModelInfo, 2> kModels{{
     {"weber-penn", "Weber & Penn's parametric trees with da Vinci's and Murray's natural rules (Arbor JSON or Arbaro XML species)",
-     "docs/species-format.md", readWeberPennModel, speciesFormatMarkdown, randomWeberPennModel},
+     "docs/species-format.md", "", readWeberPennModel, speciesFormatMarkdown, randomWeberPennModel},
+    {"l-system", "Lindenmayer systems (ABOP ch. 1-2): bracketed, stochastic, context-sensitive, parametric, 3D turtle (.lsys grammars)",
+     "docs/lsystem-format.md", ".lsys", readLsystem, nullptr, nullptr},
 }};
 
 constexpr const char* kModelKey = "model";
@@ -27,18 +35,30 @@ std::string namedModel(const std::string& text, const std::string& file) {
   if (root.is_discarded() || !root.is_object() || !root.contains(kModelKey)) return "";
   const nlohmann::json& model = root.at(kModelKey);
   std::string names;
-  for (const GrowthModelInfo& m : kModels) names += std::string(names.empty() ? "" : ", ") + "\"" + m.name + "\"";
+  for (const GrowthModelInfo& m : kModels)
+    if (!*m.extension) names += std::string(names.empty() ? "" : ", ") + "\"" + m.name + "\"";  // those read from JSON
   if (!model.is_string()) throw InputError(file, kModelKey, "expected the name of a growth model; allowed: " + names);
   const std::string name = model.get<std::string>();
   for (const GrowthModelInfo& m : kModels) {
+    if (name == m.name && *m.extension) {
+      throw InputError(file, kModelKey, "'" + name + "' models are read from " + m.extension + " files, not JSON (" + m.format + ")");
+    }
     if (name == m.name) return name;
   }
   throw InputError(file, kModelKey, "'" + name + "' is not a growth model; allowed: " + names);
 }
 
+// The model whose own file type this is (.lsys), or null.
+const GrowthModelInfo* byExtension(const std::string& file) {
+  for (const GrowthModelInfo& m : kModels) {
+    if (*m.extension && endsWith(file, m.extension)) return &m;
+  }
+  return nullptr;
+}
+
 void requireModelExtension(const std::string& file) {
-  if (!endsWith(file, ".xml") && !endsWith(file, ".json")) {
-    throw InputError(file, "(file)", "unknown model file type; use .json (Arbor, any model) or .xml (an Arbaro species)");
+  if (!endsWith(file, ".xml") && !endsWith(file, ".json") && !byExtension(file)) {
+    throw InputError(file, "(file)", "unknown model file type; use .json (Arbor, any model), .xml (an Arbaro species) or .lsys (an L-system)");
   }
 }
 
@@ -48,6 +68,7 @@ std::span<const GrowthModelInfo> growthModels() { return kModels; }
 
 TreeModel readModelFile(const std::string& text, const std::string& file, const ModelReadOptions& options) {
   requireModelExtension(file);
+  if (const GrowthModelInfo* own = byExtension(file)) return own->read(text, file, false, options);
   const bool xml = endsWith(file, ".xml");
   if (const std::string format = xml ? "" : topLevelJsonString(text, "format"); format == "arbor-skeleton/1" || format == "arbor-graph/1") {
     throw InputError(file, "format", "'" + format + "' is a tree already grown, not a model file; 'arbor mesh', 'render' and 'view' take it");

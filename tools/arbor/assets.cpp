@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
+#include <utility>
 #include <unistd.h>
 
 #include "common/input_file.hpp"
@@ -25,13 +26,24 @@ std::string assetDirectory() {
   return ARBOR_ASSET_DIR;
 }
 
+namespace {
+
+// Where presets live: species and other model files, then L-system grammars.
+constexpr std::pair<const char*, const char*> kPresetFolders[] = {{"presets", ".json"}, {"lsystems", ".lsys"}};
+
+}  // namespace
+
 std::vector<std::string> presetNames() {
   std::vector<std::string> names;
-  std::error_code ec;
-  for (const auto& entry : fs::directory_iterator(fs::path(assetDirectory()) / "presets", ec)) {
-    if (entry.path().extension() == ".json") names.push_back(entry.path().stem().string());
+  for (const auto& [folder, extension] : kPresetFolders) {
+    std::vector<std::string> here;
+    std::error_code ec;
+    for (const auto& entry : fs::directory_iterator(fs::path(assetDirectory()) / folder, ec)) {
+      if (entry.path().extension() == extension) here.push_back(entry.path().stem().string());
+    }
+    std::sort(here.begin(), here.end());
+    names.insert(names.end(), here.begin(), here.end());
   }
-  std::sort(names.begin(), names.end());
   return names;
 }
 
@@ -51,9 +63,13 @@ namespace {
 
 // A preset's file, or "" when the argument names none.
 std::string presetFile(const std::string& name) {
-  const fs::path preset = fs::path(assetDirectory()) / "presets" / (name + ".json");
-  std::error_code ec;
-  return name.find('/') == std::string::npos && fs::is_regular_file(preset, ec) ? preset.string() : "";
+  if (name.find('/') != std::string::npos) return "";
+  for (const auto& [folder, extension] : kPresetFolders) {
+    const fs::path preset = fs::path(assetDirectory()) / folder / (name + extension);
+    std::error_code ec;
+    if (fs::is_regular_file(preset, ec)) return preset.string();
+  }
+  return "";
 }
 
 [[noreturn]] void neitherFileNorPreset(const std::string& argument, const std::string& files) {

@@ -11,7 +11,8 @@ namespace arbor::cli {
 
 std::string assetDirectory();
 
-// Preset names ("black-tupelo", ...) from assets/presets/*.json, sorted.
+// Preset names: model files in assets/presets/*.json ("black-tupelo", ...), then L-system grammars in
+// assets/lsystems/*.lsys ("fig-1-24a", ...), each group sorted.
 std::vector<std::string> presetNames();
 
 // Which angles a loaded species follows: the file's own (an Arbaro XML file's DownAngle and SplitAngle, a JSON

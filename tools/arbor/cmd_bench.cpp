@@ -136,6 +136,7 @@ void addBenchCommand(CLI::App& app, Action& action) {
 
   addBenchTessCommand(*bench, action);
   addBenchLeavesCommand(*bench, action);
+  addBenchLsystemCommand(*bench, action);
 }
 
 }  // namespace arbor::cli

@@ -41,9 +41,11 @@ TreeModel modelOf(const TreeSource& source, const std::string& file) {
 int runSpecies(const SpeciesOptions& o) {
   const GrowthModelInfo& model = modelNamed(o.model);
   if (o.formatDoc) {
+    if (!model.formatMarkdown) throw InputError(o.model, "--model", std::string("its format is documented in ") + model.format);
     std::fputs(model.formatMarkdown().c_str(), stdout);
     return 0;
   }
+  if (!o.random.empty() && !model.random) throw InputError(o.model, "--model", "has no random parameters; --random is for weber-penn");
   if (o.random.empty() && (o.list || o.species.empty())) {
     std::printf("growth models:\n");
     for (const GrowthModelInfo& m : growthModels()) std::printf("  %-12s %s (%s)\n", m.name, m.summary, m.format);

@@ -17,6 +17,8 @@ void addSpeciesCommand(CLI::App& app, Action& action);
 void addBenchCommand(CLI::App& app, Action& action);
 void addBenchTessCommand(CLI::App& bench, Action& action);  // under `bench`
 void addBenchLeavesCommand(CLI::App& bench, Action& action);  // under `bench`
+void addBenchLsystemCommand(CLI::App& bench, Action& action);  // under `bench`
+void addLsystemCommand(CLI::App& app, Action& action);
 void addRenderCommand(CLI::App& app, Action& action);
 void addViewCommand(CLI::App& app, Action& action);
 void addTexturesCommand(CLI::App& app, Action& action);

@@ -41,6 +41,7 @@ int main(int argc, char** argv) {
   Action action;
   addGenerateCommand(app, action);
   addMeshCommand(app, action);
+  addLsystemCommand(app, action);
   addSpeciesCommand(app, action);
   addBenchCommand(app, action);
   addRenderCommand(app, action);
