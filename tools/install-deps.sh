@@ -7,7 +7,7 @@ packages=(
   build-essential cmake pkg-config
   mesa-vulkan-drivers libvulkan-dev vulkan-validationlayers vulkan-tools glslang-tools spirv-tools
   libglfw3-dev libglm-dev libosd-dev libstb-dev catch2
-  nlohmann-json3-dev libtinyxml2-dev libtinygltf-dev libcli11-dev libimgui-dev
+  nlohmann-json3-dev libnanoflann-dev libtinyxml2-dev libtinygltf-dev libcli11-dev libimgui-dev
   xvfb xauth xdotool
 )
 [[ "${1:-}" == "--fuzz" ]] && packages+=(clang-14 libclang-rt-14-dev)

@@ -6,6 +6,7 @@
 #include "common/input_file.hpp"
 #include "common/text_util.hpp"
 #include "lsystem/lsystem_model.hpp"
+#include "space_colonization/space_colonization_model.hpp"
 #include "weber_penn/species_io.hpp"
 #include "weber_penn/weber_penn_model.hpp"
 
@@ -18,11 +19,18 @@ TreeModel readLsystem(const std::string& text, const std::string& file, bool, co
   return readLsystemModel(text, file, options);
 }
 
-const std::array<GrowthModelInfo, 2> kModels{{
+// A space-colonization file is JSON naming its model; never an Arbaro XML.
+TreeModel readSpaceColonization(const std::string& text, const std::string& file, bool, const ModelReadOptions& options) {
+  return readSpaceColonizationModel(text, file, options);
+}
+
+const std::array<GrowthModelInfo, 3> kModels{{
     {"weber-penn", "Weber & Penn's parametric trees with da Vinci's and Murray's natural rules (Arbor JSON or Arbaro XML species)",
      "docs/species-format.md", "", readWeberPennModel, speciesFormatMarkdown, randomWeberPennModel},
     {"l-system", "Lindenmayer systems (ABOP ch. 1-2): bracketed, stochastic, context-sensitive, parametric, 3D turtle (.lsys grammars)",
      "docs/lsystem-format.md", ".lsys", readLsystem, nullptr, nullptr},
+    {"space-colonization", "Space colonization (Runions et al. 2007) with clouds, obstacles and gravitropism (Patrick, Rege & Bailey)",
+     "docs/space-colonization-format.md", "", readSpaceColonization, nullptr, nullptr},
 }};
 
 constexpr const char* kModelKey = "model";
