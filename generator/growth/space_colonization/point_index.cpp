@@ -61,7 +61,7 @@ std::int64_t PointIndex::nearest(const Vec3& q) const {
   // Among the points as near as the one found (ties), the lowest index.
   const double best = distance2(tree_->data.points[index], q);
   std::vector<std::uint32_t> ties;
-  within(q, std::sqrt(best) * (1 + 1e-12) + 1e-300, ties);
+  within(q, std::sqrt(best) * (1 + 1e-9) + 1e-150, ties);
   std::int64_t out = index;
   double outD2 = best;
   for (const std::uint32_t i : ties) {

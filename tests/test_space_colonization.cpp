@@ -1,0 +1,536 @@
+// Space colonization (issue 16): clouds, the k-d tree, the growth invariants, pause, continued growth, rewind,
+// obstacles, gravitropism, bad files, and every preset through the model to a closed quad mesh.
+#include <catch2/catch.hpp>
+
+#include <chrono>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <sstream>
+
+#include "common/input_error.hpp"
+#include "growth/random.hpp"
+#include "growth/space_colonization/space_colonization_model.hpp"
+#include "mesh/mesh_checks.hpp"
+#include "mesh/tree_mesh.hpp"
+
+using namespace arbor;
+using namespace arbor::sc;
+
+namespace {
+
+double distance2(const Vec3& a, const Vec3& b) { return glm::dot(a - b, a - b); }
+
+bool sameBits(const Vec3& a, const Vec3& b) { return std::memcmp(&a, &b, sizeof(Vec3)) == 0; }
+
+bool sameNodes(const std::vector<Node>& a, const std::vector<Node>& b) {
+  if (a.size() != b.size()) return false;
+  for (std::size_t i = 0; i < a.size(); ++i)
+    if (!sameBits(a[i].position, b[i].position) || a[i].parent != b[i].parent || a[i].age != b[i].age || a[i].enabled != b[i].enabled) return false;
+  return true;
+}
+
+std::vector<bool> liveSet(const Colonizer& c) {
+  std::vector<bool> out;
+  for (const AttractionPoint& p : c.points()) out.push_back(p.killedAt == kAlive);
+  return out;
+}
+
+AttractionCloud crown(std::uint32_t points = 800) {
+  AttractionCloud c;
+  c.shape = CloudShape::Ellipsoid;
+  c.center = Vec3(0, 0, 1.0);
+  c.size = Vec3(0.6, 0.6, 0.4);
+  c.points = points;
+  c.influence = 0.3;
+  c.kill = 0.1;
+  return c;
+}
+
+Colonizer smallTree(double gravity = 0) {
+  ColonizerSettings s;
+  s.segmentLength = 0.05;
+  s.gravity = gravity;
+  s.trunkSegments = 12;
+  s.seed = 7;
+  Colonizer c(s);
+  c.addCloud(crown());
+  return c;
+}
+
+// The brute-force check: no live point within its kill distance of an enabled node.
+void requireKillInvariant(const Colonizer& c) {
+  for (const AttractionPoint& p : c.points()) {
+    if (p.killedAt != kAlive) continue;
+    const double k = c.clouds()[p.cloud].kill;
+    for (const Node& n : c.nodes())
+      if (n.enabled) REQUIRE(distance2(p.position, n.position) >= k * k);
+  }
+}
+
+// The brute-force check of the attractions: each live point's closest enabled node within its influence radius.
+void requireAttractions(const Colonizer& c) {
+  for (std::size_t i = 0; i < c.points().size(); ++i) {
+    const AttractionPoint& p = c.points()[i];
+    if (p.killedAt != kAlive) continue;
+    const double r = c.clouds()[p.cloud].influence;
+    std::int32_t best = -1;
+    double bestD2 = r * r;
+    for (std::size_t n = 0; n < c.nodes().size(); ++n) {
+      const double d2 = distance2(p.position, c.nodes()[n].position);
+      if (c.nodes()[n].enabled && d2 < bestD2) best = static_cast<std::int32_t>(n), bestD2 = d2;
+    }
+    REQUIRE(c.attractedNode(i) == best);
+  }
+}
+
+void requireOneRootedTree(const Colonizer& c) {
+  const auto& nodes = c.nodes();
+  REQUIRE(nodes[0].parent == -1);
+  for (std::size_t i = 1; i < nodes.size(); ++i) {
+    REQUIRE(nodes[i].parent >= 0);
+    REQUIRE(static_cast<std::size_t>(nodes[i].parent) < i);  // so acyclic and reachable from node 0
+    REQUIRE(nodes[i].age >= nodes[i - 1].age);
+  }
+}
+
+void requireSegmentsOfLengthD(const Colonizer& c) {
+  const double d = c.settings().segmentLength;
+  for (const Node& n : c.nodes())
+    if (n.parent >= 0) REQUIRE(std::abs(std::sqrt(distance2(n.position, c.nodes()[static_cast<std::size_t>(n.parent)].position)) - d) < 1e-5);
+}
+
+void requireObstaclesRespected(const Colonizer& c) {
+  const auto& nodes = c.nodes();
+  for (std::size_t i = 1; i < nodes.size(); ++i) {
+    const Node& n = nodes[i];
+    const Node& parent = nodes[static_cast<std::size_t>(n.parent)];
+    if (!parent.enabled) REQUIRE(!n.enabled);  // closed under descendants
+    if (!n.enabled) continue;
+    for (const Obstacle& o : c.obstacles()) REQUIRE(!segmentHitsObstacle(o, parent.position, n.position));
+  }
+}
+
+std::string refusedField(const std::string& text, const std::string& file = "bad.json") {
+  try {
+    readSpaceColonizationModel(text, file);
+  } catch (const InputError& e) {
+    return e.field();
+  }
+  return "(accepted)";
+}
+
+std::string readText(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// Reference implementation: Runions et al.'s loop, every nearest node by brute force, no index, no pause.
+std::vector<Vec3> referenceColonization(const ColonizerSettings& s, const AttractionCloud& cloud) {
+  std::vector<Vec3> nodes;
+  std::vector<std::vector<std::size_t>> children;
+  for (int i = 0; i <= s.trunkSegments; ++i) {
+    nodes.push_back(s.trunkBase + Vec3(0, 0, s.segmentLength * i));
+    children.emplace_back();
+    if (i > 0) children[static_cast<std::size_t>(i - 1)].push_back(static_cast<std::size_t>(i));
+  }
+  const std::vector<Vec3> points = sampleCloud(cloud, cloudSeed(s.seed, 0));
+  std::vector<bool> alive(points.size(), true);
+  const auto kill = [&](const Vec3& v) {
+    for (std::size_t p = 0; p < points.size(); ++p)
+      if (alive[p] && distance2(points[p], v) < cloud.kill * cloud.kill) alive[p] = false;
+  };
+  for (const Vec3& v : nodes) kill(v);
+  for (;;) {
+    std::vector<Vec3> sum(nodes.size(), Vec3(0.0));
+    std::vector<bool> attracted(nodes.size(), false);
+    bool any = false;
+    for (std::size_t p = 0; p < points.size(); ++p) {
+      if (!alive[p]) continue;
+      any = true;
+      std::int64_t best = -1;
+      double bestD2 = cloud.influence * cloud.influence;
+      for (std::size_t n = 0; n < nodes.size(); ++n)
+        if (distance2(points[p], nodes[n]) < bestD2) best = static_cast<std::int64_t>(n), bestD2 = distance2(points[p], nodes[n]);
+      if (best < 0) continue;
+      const Vec3 d = points[p] - nodes[static_cast<std::size_t>(best)];
+      sum[static_cast<std::size_t>(best)] += d / std::sqrt(glm::dot(d, d));
+      attracted[static_cast<std::size_t>(best)] = true;
+    }
+    if (!any) break;
+    std::vector<std::pair<std::size_t, Vec3>> growers;
+    for (std::size_t n = 0; n < nodes.size(); ++n)
+      if (attracted[n] && glm::length(sum[n]) >= 1e-9) growers.push_back({n, sum[n] / glm::length(sum[n])});
+    bool added = false;
+    for (const auto& [n, dir] : growers) {
+      const Vec3 to = nodes[n] + s.segmentLength * dir;
+      bool duplicate = false;
+      for (const std::size_t c : children[n]) duplicate |= distance2(nodes[c], to) < 1e-12 * s.segmentLength * s.segmentLength;
+      if (duplicate) continue;
+      children[n].push_back(nodes.size());
+      nodes.push_back(to);
+      children.emplace_back();
+      kill(to);
+      added = true;
+    }
+    if (!added) break;
+  }
+  return nodes;
+}
+
+}  // namespace
+
+TEST_CASE("each cloud gives exactly its N points inside its volume, the same for the same seed", "[sc]") {
+  for (const CloudShape shape : {CloudShape::Sphere, CloudShape::Ellipsoid, CloudShape::Cone, CloudShape::Box}) {
+    INFO(cloudShapeName(shape));
+    AttractionCloud c;
+    c.shape = shape;
+    c.center = Vec3(1, -2, 3);
+    c.size = shape == CloudShape::Sphere ? Vec3(2.0) : Vec3(2, 1, 3);
+    if (shape == CloudShape::Cone) c.size.y = c.size.x;
+    c.points = 5000;
+    const std::vector<Vec3> a = sampleCloud(c, 11), b = sampleCloud(c, 11), other = sampleCloud(c, 12);
+    REQUIRE(a.size() == 5000);
+    for (const Vec3& p : a) REQUIRE(insideCloud(c, p));
+    REQUIRE(std::memcmp(a.data(), b.data(), a.size() * sizeof(Vec3)) == 0);
+    REQUIRE(std::memcmp(a.data(), other.data(), a.size() * sizeof(Vec3)) != 0);
+    // Uniform: the mean is the volume's centroid (a cone's at a quarter of its height).
+    Vec3 mean(0.0);
+    for (const Vec3& p : a) mean += p / 5000.0;
+    const Vec3 centroid = shape == CloudShape::Cone ? c.center + Vec3(0, 0, 0.25 * c.size.z) : c.center;
+    CHECK(glm::length(mean - centroid) < 0.1);
+  }
+}
+
+TEST_CASE("the k-d tree's answers equal brute force", "[sc]") {
+  Rng rng(3, 0);
+  std::vector<Vec3> points;
+  for (int i = 0; i < 3000; ++i) points.push_back(Vec3(rng.signedUnit(), rng.signedUnit(), rng.signedUnit()));
+  points.push_back(points[17]);  // a tie: the lower index wins
+  const PointIndex index(points);
+  std::vector<std::uint32_t> found;
+  for (int q = 0; q < 300; ++q) {
+    const Vec3 query = q == 0 ? points[17] : Vec3(1.3 * rng.signedUnit(), 1.3 * rng.signedUnit(), 1.3 * rng.signedUnit());
+    const double radius = 0.05 + 0.3 * rng.uniform();
+    index.within(query, radius, found);
+    std::sort(found.begin(), found.end());
+    std::vector<std::uint32_t> brute;
+    std::int64_t nearest = -1;
+    double nearestD2 = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      const double d2 = distance2(points[i], query);
+      if (d2 < radius * radius) brute.push_back(static_cast<std::uint32_t>(i));
+      if (d2 < nearestD2) nearest = static_cast<std::int64_t>(i), nearestD2 = d2;
+    }
+    REQUIRE(found == brute);
+    REQUIRE(index.nearest(query) == nearest);
+  }
+}
+
+TEST_CASE("growth: segments of length D, the kill distance kept, one rooted tree, attractions as brute force", "[sc]") {
+  Colonizer c = smallTree();
+  int steps = 0;
+  while (!c.finished()) {
+    c.step(7);
+    requireKillInvariant(c);
+    if (++steps % 10 == 0) requireAttractions(c);
+  }
+  requireAttractions(c);
+  requireOneRootedTree(c);
+  requireSegmentsOfLengthD(c);
+  CHECK(c.nodes().size() > 100);
+  CHECK(c.livePoints() < c.points().size() / 10);
+}
+
+TEST_CASE("any step size grows the same tree as one run", "[sc]") {
+  Colonizer one = smallTree(0.5);
+  one.growToEnd();
+  for (const std::size_t size : {1, 2, 5, 37, 1000}) {
+    INFO(size);
+    Colonizer paused = smallTree(0.5);
+    while (!paused.finished()) REQUIRE(paused.step(size) <= size);
+    REQUIRE(sameNodes(paused.nodes(), one.nodes()));
+    REQUIRE(liveSet(paused) == liveSet(one));
+  }
+}
+
+TEST_CASE("gravity weight 0 is the base algorithm bit for bit; a larger weight never raises a direction", "[sc]") {
+  Colonizer c = smallTree(0);
+  c.growToEnd();
+  const std::vector<Vec3> reference = referenceColonization(c.settings(), crown());
+  REQUIRE(reference.size() == c.nodes().size());
+  for (std::size_t i = 0; i < reference.size(); ++i) REQUIRE(sameBits(reference[i], c.nodes()[i].position));
+
+  Rng rng(5, 0);
+  for (int i = 0; i < 10000; ++i) {
+    const Vec3 sum(rng.signedUnit(), rng.signedUnit(), rng.signedUnit());
+    const Vec3 node(3 * rng.signedUnit(), 3 * rng.signedUnit(), 3 * rng.uniform());
+    double previous = growthDirection(sum, node, Vec3(0.0), 0).z;
+    for (const double w : {0.01, 0.1, 0.5, 1.0, 5.0}) {
+      const Vec3 d = growthDirection(sum, node, Vec3(0.0), w);
+      REQUIRE(std::abs(glm::length(d) - 1) < 1e-12);
+      REQUIRE(d.z <= previous + 1e-15);
+      previous = d.z;
+    }
+  }
+  // In a grown tree: the same tree with gravity leans lower on average.
+  Colonizer bent = smallTree(2.0);
+  bent.growToEnd();
+  const auto meanZ = [](const Colonizer& t) {
+    double z = 0;
+    for (const Node& n : t.nodes()) z += n.position.z;
+    return z / static_cast<double>(t.nodes().size());
+  };
+  CHECK(meanZ(bent) < meanZ(c));
+}
+
+TEST_CASE("a cloud added after convergence leaves every old node unchanged and hangs new ones below old ones", "[sc]") {
+  Colonizer c = smallTree();
+  c.growToEnd();
+  const std::vector<Node> old = c.nodes();
+  AttractionCloud more;
+  more.shape = CloudShape::Sphere;
+  more.center = Vec3(0.7, 0, 1.2);
+  more.size = Vec3(0.3);
+  more.points = 300;
+  more.influence = 0.35;
+  more.kill = 0.08;
+  c.addCloud(more);
+  REQUIRE(!c.finished());
+  c.growToEnd();
+  REQUIRE(c.nodes().size() > old.size());
+  REQUIRE(sameNodes(std::vector<Node>(c.nodes().begin(), c.nodes().begin() + static_cast<std::ptrdiff_t>(old.size())), old));
+  for (std::size_t i = old.size(); i < c.nodes().size(); ++i) {
+    std::int32_t a = c.nodes()[i].parent;
+    while (a >= static_cast<std::int32_t>(old.size())) a = c.nodes()[static_cast<std::size_t>(a)].parent;
+    REQUIRE(a >= 0);
+  }
+  requireKillInvariant(c);
+  requireSegmentsOfLengthD(c);
+}
+
+TEST_CASE("rewinding to age a gives the snapshot at age a; regrowing reproduces the original", "[sc]") {
+  Colonizer c = smallTree(0.3);
+  std::vector<Colonizer> snapshots;  // snapshots[a]: as iteration a ended
+  snapshots.push_back(c);
+  while (!c.finished()) {
+    c.step(3);
+    // A snapshot exactly at an iteration's end: step node by node from a copy.
+    while (snapshots.size() <= c.age()) {
+      Colonizer s = snapshots.back();
+      while (s.age() < snapshots.size()) s.step(1);
+      snapshots.push_back(s);
+    }
+  }
+  const Colonizer final = c;
+  REQUIRE(c.age() > 10);
+  for (const std::uint32_t a : {0u, 1u, 5u, c.age() / 2, c.age() - 1}) {
+    INFO(a);
+    Colonizer r = final;
+    r.rewind(a);
+    REQUIRE(r.age() == a);
+    REQUIRE(sameNodes(r.nodes(), snapshots[a].nodes()));
+    REQUIRE(liveSet(r) == liveSet(snapshots[a]));
+    requireKillInvariant(r);
+    r.growToEnd();
+    REQUIRE(sameNodes(r.nodes(), final.nodes()));
+    REQUIRE(liveSet(r) == liveSet(final));
+  }
+}
+
+TEST_CASE("obstacles: no enabled segment enters one, disabled sets closed under descendants, re-enabled on removal", "[sc]") {
+  Colonizer c = smallTree();
+  Obstacle ball;
+  ball.shape = ObstacleShape::Sphere;
+  ball.center = Vec3(0.3, 0, 1.0);
+  ball.size = Vec3(0.2);
+  c.addObstacle(ball);
+  while (!c.finished()) {
+    c.step(11);
+    requireObstaclesRespected(c);
+    requireKillInvariant(c);
+  }
+  for (const Node& n : c.nodes()) CHECK(!insideObstacle(ball, n.position));
+  const std::vector<Node> before = c.nodes();
+
+  Obstacle wall;  // added later: it cuts off part of the crown
+  wall.shape = ObstacleShape::Box;
+  wall.center = Vec3(-0.4, 0, 1.0);
+  wall.size = Vec3(0.1, 2, 2);
+  c.addObstacle(wall);
+  requireObstaclesRespected(c);
+  requireKillInvariant(c);
+  const auto disabled = [](const Colonizer& t) {
+    std::size_t n = 0;
+    for (const Node& node : t.nodes()) n += !node.enabled;
+    return n;
+  };
+  REQUIRE(disabled(c) > 0);
+  for (std::size_t i = 0; i < before.size(); ++i) REQUIRE(sameBits(c.nodes()[i].position, before[i].position));  // kept, flagged
+  while (!c.finished()) {
+    c.step(5);
+    requireObstaclesRespected(c);
+    requireKillInvariant(c);
+  }
+  c.removeObstacle(1);
+  requireObstaclesRespected(c);
+  requireKillInvariant(c);
+  REQUIRE(disabled(c) == 0);
+}
+
+TEST_CASE("a closed OBJ mesh is an obstacle; an open one is refused", "[sc]") {
+  const std::string cube =
+      "v -1 -1 -1\nv 1 -1 -1\nv 1 1 -1\nv -1 1 -1\nv -1 -1 1\nv 1 -1 1\nv 1 1 1\nv -1 1 1\n"
+      "f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n";
+  const TriangleMesh mesh = readObjMesh(cube, "cube.obj", "file");
+  REQUIRE(mesh.triangles.size() == 12);
+  Obstacle asMesh, asBox;
+  asMesh.shape = ObstacleShape::Mesh;
+  asMesh.mesh = std::make_shared<const TriangleMesh>(mesh);
+  asBox.size = Vec3(2.0);
+  Rng rng(9, 0);
+  for (int i = 0; i < 2000; ++i) {
+    const Vec3 a(1.5 * rng.signedUnit(), 1.5 * rng.signedUnit(), 1.5 * rng.signedUnit());
+    const Vec3 b = a + 0.4 * Vec3(rng.signedUnit(), rng.signedUnit(), rng.signedUnit());
+    REQUIRE(insideObstacle(asMesh, a) == insideObstacle(asBox, a));
+    REQUIRE(segmentHitsObstacle(asMesh, a, b) == segmentHitsObstacle(asBox, a, b));
+  }
+  try {
+    readObjMesh(cube.substr(0, cube.rfind("f ")), "open.obj", "obstacles[0].file");
+    FAIL("an open mesh was accepted");
+  } catch (const InputError& e) {
+    CHECK(e.field() == "obstacles[0].file");
+    CHECK_THAT(std::string(e.what()), Catch::Contains("not closed"));
+  }
+}
+
+TEST_CASE("bad files are refused naming the field", "[sc]") {
+  const std::string good = R"({"model": "space-colonization", "segmentLength": 0.1, "trunk": {"segments": 5, "width": 0.2},
+    "clouds": [{"shape": "sphere", "center": [0, 0, 2], "radius": 1, "points": 100, "influence": 0.5, "kill": 0.1}]})";
+  REQUIRE(refusedField(good) == "(accepted)");
+  const auto with = [&](const std::string& from, const std::string& to) {
+    std::string t = good;
+    const std::size_t at = t.find(from);
+    REQUIRE(at != std::string::npos);
+    return t.replace(at, from.size(), to);
+  };
+  CHECK(refusedField(with("\"radius\": 1", "\"radius\": 0")) == "clouds[0].radius");
+  CHECK(refusedField(with("\"radius\": 1", "\"radius\": -1")) == "clouds[0].radius");
+  CHECK(refusedField(with("\"influence\": 0.5", "\"influence\": -0.5")) == "clouds[0].influence");
+  CHECK(refusedField(with("\"kill\": 0.1", "\"kill\": 0.5")) == "clouds[0].kill");
+  CHECK(refusedField(with("\"kill\": 0.1", "\"kill\": 0.7")) == "clouds[0].kill");
+  CHECK(refusedField(with("\"shape\": \"sphere\"", "\"shape\": \"torus\"")) == "clouds[0].shape");
+  CHECK(refusedField(with("\"shape\": \"sphere\", \"center\": [0, 0, 2], \"radius\": 1",
+                          "\"shape\": \"box\", \"center\": [0, 0, 2], \"size\": [1, 0, 1]")) == "clouds[0].size");
+  CHECK(refusedField(with("\"segmentLength\": 0.1", "\"segmentLength\": 0")) == "segmentLength");
+  CHECK(refusedField(with("\"width\": 0.2", "\"width\": -0.2")) == "trunk.width");
+  CHECK(refusedField(with("\"points\": 100", "\"points\": 0")) == "clouds[0].points");
+  CHECK(refusedField(with("\"clouds\": [", "\"clouds\": [], \"obstacles\": [")) == "clouds");
+  CHECK(refusedField(with("\"trunk\"", "\"obstacles\": [{\"shape\": \"box\", \"center\": [0, 0, 0.2], \"size\": [1, 1, 0.1]}], \"trunk\"")) == "trunk");
+  CHECK(refusedField(with("\"trunk\"", "\"obstacles\": [{\"shape\": \"sphere\", \"center\": [0, 0, 0.2], \"radius\": -1}], \"trunk\"")) ==
+        "obstacles[0].radius");
+  CHECK(refusedField(with("\"trunk\"", "\"gravity\": -1, \"trunk\"")) == "gravity");
+  CHECK(refusedField(with("\"trunk\"", "\"colors\": 1, \"trunk\"")) == "colors");
+
+  // An OBJ obstacle that is not closed: refused naming the obstacle's file field.
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "arbor-sc-test";
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "open.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+  const std::string mesh = with("\"trunk\"", "\"obstacles\": [{\"shape\": \"mesh\", \"file\": \"open.obj\"}], \"trunk\"");
+  CHECK(refusedField(mesh, (dir / "tree.json").string()) == "obstacles[0].file");
+  CHECK(refusedField(with("\"trunk\"", "\"obstacles\": [{\"shape\": \"mesh\", \"file\": \"none.obj\"}], \"trunk\""), (dir / "tree.json").string()) ==
+        "obstacles[0].file");
+}
+
+TEST_CASE("the model: seed, parameters, radii never decreasing toward the root, toJson read back", "[sc]") {
+  const std::string text = R"({"model": "space-colonization", "name": "t", "seed": 4, "segmentLength": 0.1, "gravity": 0.05,
+    "trunk": {"segments": 8, "width": 0.1},
+    "clouds": [{"shape": "cone", "center": [0, 0, 1], "radius": 1, "height": 1.5, "points": 400, "influence": 0.5, "kill": 0.15}],
+    "radii": {"tip": 0.004}, "leaves": {"depth": 2}})";
+  const TreeModel model = readSpaceColonizationModel(text, "t.json");
+  CHECK(model.model() == std::string("space-colonization"));
+  const Skeleton a = model.grow({}), b = model.grow({});
+  CHECK(a.nodes.size() == b.nodes.size());
+  const Skeleton other = model.grow({2, 0, {}});
+  CHECK(other.nodes.size() > 10);
+  // seed 2 of a file with seed 4 is the file with seed 5 at seed 1.
+  std::string five = text;
+  five.replace(five.find("\"seed\": 4"), 9, "\"seed\": 5");
+  CHECK(readSpaceColonizationModel(five, "t.json").grow({}).nodes.size() == other.nodes.size());
+  const sc::SpaceColonization& m = *spaceColonizationOf(model);
+  const Colonizer grown = [&] {
+    Colonizer c = startColonizer(m, 1);
+    c.growToEnd();
+    return c;
+  }();
+  const BranchGraph graph = colonizationGraph(grown, m);
+  const std::vector<double> r = pipeRadii(graph, colonizationGraphOptions(m));
+  for (std::size_t i = 1; i < graph.nodes.size(); ++i) {
+    const std::int32_t p = graph.nodes[i].parent;
+    if (p > 0) REQUIRE(r[static_cast<std::size_t>(p)] >= r[i]);
+  }
+  CHECK(!graph.leaves.empty());
+  // Editable numbers: D, gravity, seed, then the cone's points, influence, kill, radius and height.
+  const auto params = model.parameters();
+  REQUIRE(params.size() == 8);
+  CHECK(params[0].key == "segmentLength");
+  CHECK(params[6].key == "radius");
+  TreeModel edited = model;
+  edited.setValue(4, 0.2);  // influence below kill: kill follows
+  CHECK(edited.value(5) < edited.value(4));
+  CHECK(model.value(4) == 0.5);
+  const TreeModel again = readSpaceColonizationModel(model.toJson(), "t.json");
+  CHECK(again.toJson() == model.toJson());
+  CHECK(again.grow({}).nodes.size() == a.nodes.size());
+}
+
+TEST_CASE("every space-colonization preset grows and meshes to a closed quad manifold", "[sc]") {
+  int presets = 0;
+  for (const auto& e : std::filesystem::directory_iterator(std::string(ARBOR_ASSET_DIR) + "/presets")) {
+    const std::string text = readText(e.path());
+    if (text.find("\"space-colonization\"") == std::string::npos) continue;
+    ++presets;
+    INFO(e.path().filename().string());
+    const TreeModel model = readSpaceColonizationModel(text, e.path().string());
+    const auto start = std::chrono::steady_clock::now();
+    const Skeleton s = model.grow({});
+    const TreeMesh tree = buildTreeMesh(s);
+    const MeshTopologyReport r = checkTopology(tree.mesh);
+    WARN(e.path().filename().string() << ": " << s.nodes.size() << " skeleton nodes, " << s.leaves.size() << " leaves, "
+                                      << tree.mesh.quads.size() << " quads, "
+                                      << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << " s");
+    CHECK(!tree.mesh.quads.empty());
+    CHECK(r.boundaryEdges == 0);
+    CHECK(r.nonManifoldEdges == 0);
+    CHECK(r.misorientedEdges == 0);
+    CHECK(r.nonManifoldVertices == 0);
+    CHECK(r.components == 1);
+    CHECK(r.eulerCharacteristic == 2);
+    CHECK(r.signedVolume > 0);
+  }
+  CHECK(presets == 4);
+}
+
+TEST_CASE("100,000 attraction points colonized to the end", "[.bench][sc]") {
+  ColonizerSettings s;
+  s.segmentLength = 0.1;
+  s.trunkSegments = 20;
+  Colonizer c(s);
+  AttractionCloud cloud;
+  cloud.shape = CloudShape::Sphere;
+  cloud.center = Vec3(0, 0, 6);
+  cloud.size = Vec3(4.0);
+  cloud.points = 100'000;
+  cloud.influence = 0.6;
+  cloud.kill = 0.1;
+  const auto start = std::chrono::steady_clock::now();
+  c.addCloud(cloud);
+  c.growToEnd();
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  WARN("100,000 points: " << c.nodes().size() << " nodes, " << c.livePoints() << " points left, " << c.age() << " iterations, "
+                          << seconds * 1000 << " ms");
+  CHECK(c.nodes().size() >= 20'000);
+}
