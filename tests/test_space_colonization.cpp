@@ -525,7 +525,7 @@ TEST_CASE("100,000 attraction points colonized to the end", "[.bench][sc]") {
   cloud.size = Vec3(4.0);
   cloud.points = 100'000;
   cloud.influence = 0.6;
-  cloud.kill = 0.1;
+  cloud.kill = 0.2;
   const auto start = std::chrono::steady_clock::now();
   c.addCloud(cloud);
   c.growToEnd();

@@ -44,10 +44,6 @@ void Colonizer::addCloud(const AttractionCloud& cloud) {
   const auto index = static_cast<std::uint32_t>(clouds_.size());
   clouds_.push_back(cloud);
   for (const Vec3& p : sampleCloud(cloud, cloudSeed(settings_.seed, index))) points_.push_back({p, index, kAlive});
-  std::vector<Vec3> positions;
-  positions.reserve(points_.size());
-  for (const AttractionPoint& p : points_) positions.push_back(p.position);
-  index_ = PointIndex(std::move(positions));
   maxInfluence_ = std::max(maxInfluence_, cloud.influence);
   maxKill_ = std::max(maxKill_, cloud.kill);
   settle();
@@ -81,6 +77,7 @@ void Colonizer::settle() {
     n.enabled = parentEnabled && std::none_of(obstacles_.begin(), obstacles_.end(),
                                               [&](const Obstacle& o) { return segmentHitsObstacle(o, from, n.position); });
   }
+  reindex();
   closest_.assign(points_.size(), -1);
   closestD2_.assign(points_.size(), std::numeric_limits<double>::infinity());
   live_ = static_cast<std::size_t>(std::count_if(points_.begin(), points_.end(), [](const AttractionPoint& p) { return p.killedAt == kAlive; }));
@@ -94,7 +91,8 @@ void Colonizer::noteNode(std::uint32_t node, std::uint32_t killAge) {
   if (live_ == 0) return;
   const Vec3 v = nodes_[node].position;
   index_.within(v, maxInfluence_, scratch_);  // kill < influence: the kills are among them
-  for (const std::uint32_t i : scratch_) {
+  for (const std::uint32_t local : scratch_) {
+    const std::uint32_t i = indexed_[local];
     AttractionPoint& p = points_[i];
     if (p.killedAt != kAlive) continue;
     const AttractionCloud& c = clouds_[p.cloud];
@@ -110,6 +108,17 @@ void Colonizer::noteNode(std::uint32_t node, std::uint32_t killAge) {
   }
 }
 
+void Colonizer::reindex() {
+  indexed_.clear();
+  std::vector<Vec3> positions;
+  for (std::size_t i = 0; i < points_.size(); ++i) {
+    if (points_[i].killedAt != kAlive) continue;
+    indexed_.push_back(static_cast<std::uint32_t>(i));
+    positions.push_back(points_[i].position);
+  }
+  index_ = PointIndex(std::move(positions));
+}
+
 void Colonizer::beginIteration() {
   pending_.clear();
   cursor_ = 0;
@@ -118,9 +127,11 @@ void Colonizer::beginIteration() {
     finished_ = true;
     return;
   }
+  // Dead points only slow the searches down; which points a search finds alive stays the same.
+  if (2 * live_ < indexed_.size()) reindex();
   std::vector<Vec3> sum(nodes_.size(), Vec3(0.0));
   std::vector<std::uint8_t> attracted(nodes_.size(), 0);
-  for (std::size_t i = 0; i < points_.size(); ++i) {
+  for (const std::uint32_t i : indexed_) {  // every live point, in point order
     const std::int32_t c = closest_[i];
     if (c < 0 || points_[i].killedAt != kAlive) continue;
     const Vec3 d = points_[i].position - nodes_[static_cast<std::size_t>(c)].position;

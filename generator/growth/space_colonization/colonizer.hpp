@@ -81,6 +81,7 @@ class Colonizer {
   void endIterationEarly();
   void settle();                 // after an edit or a rewind: flags, kills and attractions from scratch
   void noteNode(std::uint32_t node, std::uint32_t killAge);  // kills and attracts the points around it
+  void reindex();                // the index over the live points only
 
   ColonizerSettings settings_;
   std::vector<Node> nodes_;
@@ -88,7 +89,8 @@ class Colonizer {
   std::vector<AttractionCloud> clouds_;
   std::vector<AttractionPoint> points_;
   std::vector<Obstacle> obstacles_;
-  PointIndex index_;
+  PointIndex index_;                     // over the points alive when it was built ...
+  std::vector<std::uint32_t> indexed_;   // ... these, by the index's own numbering
   std::vector<std::int32_t> closest_;    // per point: its node, or -1
   std::vector<double> closestD2_;        // per point: squared distance to it
   double maxInfluence_ = 0, maxKill_ = 0;
