@@ -69,7 +69,7 @@ TEST_CASE("species --list names the growth models and each preset's model, a fil
   CHECK_THAT(list.output, Catch::Contains("growth models:") && Catch::Contains("weber-penn") && Catch::Contains("presets in"));
   CHECK_THAT(list.output, Catch::Matches("(.|\n)*black-tupelo +weber-penn +Black Tupelo(.|\n)*"));
 
-  const std::string other = writeTemp("other-model.json", "{\"model\": \"space-colonization\", \"Name\": \"x\"}");
+  const std::string other = writeTemp("other-model.json", "{\"model\": \"self-organizing\", \"Name\": \"x\"}");
   const Result r = run("generate " + other + " --out " + arbor::test::tempPath("o.json"));
   CHECK(r.exitCode == 2);
   CHECK_THAT(r.output, Catch::Contains("other-model.json") && Catch::Contains("model") && Catch::Contains("allowed: \"weber-penn\""));

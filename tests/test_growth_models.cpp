@@ -64,9 +64,9 @@ TEST_CASE("a model file names its model, none named is Weber-Penn, an unknown on
   CHECK(plain.toJson() == named.toJson());
   CHECK(plain.toJson().find("\"model\": \"weber-penn\"") != std::string::npos);
 
-  doc["model"] = "space-colonization";
+  doc["model"] = "self-organizing";
   CHECK_THAT(modelError(doc.dump()), Catch::Contains("m.json") && Catch::Contains("model") &&
-                                         Catch::Contains("'space-colonization' is not a growth model") && Catch::Contains("\"weber-penn\""));
+                                         Catch::Contains("'self-organizing' is not a growth model") && Catch::Contains("\"weber-penn\""));
   doc["model"] = "l-system";  // a model with a file type of its own is not read from JSON
   CHECK_THAT(modelError(doc.dump()), Catch::Contains("'l-system' models are read from .lsys files"));
   doc["model"] = 3;

@@ -257,7 +257,7 @@ TEST_CASE("any step size grows the same tree as one run", "[sc]") {
   }
 }
 
-TEST_CASE("gravity weight 0 is the base algorithm bit for bit; a larger weight never raises a direction", "[sc]") {
+TEST_CASE("gravity weight 0 is the base algorithm bit for bit and a larger weight never raises a direction", "[sc]") {
   Colonizer c = smallTree(0);
   c.growToEnd();
   const std::vector<Vec3> reference = referenceColonization(c.settings(), crown());
@@ -312,7 +312,7 @@ TEST_CASE("a cloud added after convergence leaves every old node unchanged and h
   requireSegmentsOfLengthD(c);
 }
 
-TEST_CASE("rewinding to age a gives the snapshot at age a; regrowing reproduces the original", "[sc]") {
+TEST_CASE("rewinding to age a gives the snapshot at age a and regrowing reproduces the original", "[sc]") {
   Colonizer c = smallTree(0.3);
   std::vector<Colonizer> snapshots;  // snapshots[a]: as iteration a ended
   snapshots.push_back(c);
@@ -381,7 +381,7 @@ TEST_CASE("obstacles: no enabled segment enters one, disabled sets closed under 
   REQUIRE(disabled(c) == 0);
 }
 
-TEST_CASE("a closed OBJ mesh is an obstacle; an open one is refused", "[sc]") {
+TEST_CASE("a closed OBJ mesh is an obstacle and an open one is refused", "[sc]") {
   const std::string cube =
       "v -1 -1 -1\nv 1 -1 -1\nv 1 1 -1\nv -1 1 -1\nv -1 -1 1\nv 1 -1 1\nv 1 1 1\nv -1 1 1\n"
       "f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n";

@@ -20,8 +20,9 @@ std::vector<std::string> presetNames() {
   std::vector<std::string> names;
   for (const auto& e : fs::directory_iterator(fs::path(ARBOR_ASSET_DIR) / "presets")) {
     // Weber-Penn species only: other models' presets (space colonization) are tested by their own tests.
-    if (e.path().extension() == ".json" && readFile(e.path().string()).find("\"model\"") == std::string::npos)
-      names.push_back(e.path().stem().string());
+    if (e.path().extension() != ".json") continue;
+    const std::string text = readFile(e.path().string());
+    if (text.find("\"model\"") == std::string::npos || text.find("\"weber-penn\"") != std::string::npos) names.push_back(e.path().stem().string());
   }
   std::sort(names.begin(), names.end());
   return names;
