@@ -15,6 +15,7 @@
 #include "face_grid.hpp"
 #include "mesh_attributes.hpp"
 #include "mesh_checks.hpp"
+#include "quad_contact.hpp"
 #include "stem_polyline.hpp"
 #include "tree_mesh.hpp"
 
@@ -23,6 +24,7 @@ namespace arbor {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
+constexpr std::uint32_t kUnmade = 0xfffffff0u;  // indices of corners not emitted yet
 
 struct Ring {
   std::array<std::uint32_t, 4> v{};
@@ -270,12 +272,12 @@ class Builder {
       const Vec3 c = poly.position(s);
       // Only where that is close to the attachment: a child leaving at a shallow angle keeps its collar there.
       const double along = std::abs(glm::dot(c - start.branchPoint, start.parentAxis));
-      if (s < 0.5 * poly.length() && along < 1.2 * start.parentReach / opt_.limitCompensation &&
+      if (s < 0.5 * poly.length() && along < 1.45 * start.parentReach / opt_.limitCompensation &&
           glm::dot(c - center, normal) > 0.5 * placedRadius * opt_.limitCompensation) {
         const RingFrame frame = transportFrame(port.frame, poly.direction(s));
         const auto offsets = ringOffsets(frame, exitRadius * opt_.limitCompensation);
         const std::array<Vec3, 4> corners{c + offsets[0], c + offsets[1], c + offsets[2], c + offsets[3]};
-        if (!bandCrossesParent(start, portCorners, corners)) {
+        if (!bandCrossesParent(start, portCorners, corners, &q) && !bandFolds(portCorners, q, corners)) {
           for (int k = 0; k < 4; ++k) addUvw(q[static_cast<std::size_t>(k)], k, port.tex);  // child-then-parent averaging
           const Ring exit = emitRing(stem, c, frame, exitRadius, port.tex + barkTextureAdvance(glm::distance(c, center), exitRadius), s);
           band(port, exit);
@@ -296,7 +298,7 @@ class Builder {
         // A child leaving straight against its port (dir = -d) leaves along the port first: backward connection.
         const auto offsets = ringOffsets(transportFrame(port.frame, directionOr(dir + d, dir)), exitRadius * opt_.limitCompensation);
         const std::array<Vec3, 4> corners{c + offsets[0], c + offsets[1], c + offsets[2], c + offsets[3]};
-        if (bandCrossesParent(start, portCorners, corners)) continue;
+        if (bandCrossesParent(start, portCorners, corners, &q)) continue;
         const int score = std::abs(glm::dot(c - start.branchPoint, start.parentAxis)) <= along ? 2 : 1;
         if (score > best) {
           best = score;
@@ -358,8 +360,26 @@ class Builder {
     return grids_.back()->grid;
   }
 
-  // Whether the band of four quads between two cross sections (corners in ring order) cuts a parent face.
-  bool bandCrossesParent(const PortStart& start, const std::array<Vec3, 4>& a, const std::array<Vec3, 4>& b) {
+  // Whether the band from the port to corners b (not made yet) twists so far that its sides cross each other.
+  static bool bandFolds(const std::array<Vec3, 4>& a, const std::array<std::uint32_t, 4>& port, const std::array<Vec3, 4>& b) {
+    std::array<QuadCorners, 4> sides;
+    for (std::size_t i = 0; i < 4; ++i) {
+      const std::size_t j = (i + 1) % 4;
+      sides[i] = QuadCorners{{a[i], a[j], b[j], b[i]},
+                             {port[i], port[j], kUnmade + static_cast<std::uint32_t>(j), kUnmade + static_cast<std::uint32_t>(i)}};
+    }
+    for (std::size_t i = 0; i < 4; ++i) {
+      for (std::size_t k = i + 1; k < 4; ++k) {
+        if (quadsMeet(sides[i], sides[k])) return true;
+      }
+    }
+    return false;
+  }
+
+  // Whether the band of four quads between two cross sections (corners in ring order) cuts a parent face;
+  // `port`: a's vertex indices when a is the port, whose neighbouring faces the band must not fold over.
+  bool bandCrossesParent(const PortStart& start, const std::array<Vec3, 4>& a, const std::array<Vec3, 4>& b,
+                         const std::array<std::uint32_t, 4>* port = nullptr) {
     if (start.parentFacesEnd <= start.parentFacesBegin) return false;
     FaceGrid& grid = parentGrid(start.parentFacesBegin, start.parentFacesEnd);
     const Box band = boxOf(std::array<Vec3, 8>{a[0], a[1], a[2], a[3], b[0], b[1], b[2], b[3]});
@@ -371,6 +391,16 @@ class Builder {
         const auto i = static_cast<std::size_t>(k), j = static_cast<std::size_t>((k + 1) % 4);
         const std::array<Vec3, 4> side{a[i], a[j], b[j], b[i]};
         if (!boxOf(side).overlaps(faceBox)) continue;
+        if (port) {
+          // Beside the port the side meets the face at their shared corners only, as the check tests it
+          // (b's corners are not made yet: indices no vertex has).
+          const std::array<std::uint32_t, 4> ids{(*port)[i], (*port)[j], kUnmade + static_cast<std::uint32_t>(j),
+                                                 kUnmade + static_cast<std::uint32_t>(i)};
+          if (quadContact(ids, q) != QuadContact::Apart) {
+            if (quadsMeet(QuadCorners{side, ids}, QuadCorners{face, q})) return true;
+            continue;
+          }
+        }
         // A side that shares a corner with the face touches it there by construction.
         bool shares = false;
         for (std::uint32_t v : q) shares = shares || position(v) == a[i] || position(v) == a[j];
