@@ -52,17 +52,6 @@ std::vector<int> childCounts(const BranchGraph& g) {
   return count;
 }
 
-// The message of the InputError `work` throws ("" if none).
-template <class Work>
-std::string refusal(Work&& work) {
-  try {
-    work();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
-
 // What a graph's conversion and mesh must hold; the first thing that fails, or "" when all hold. `deep` adds
 // OpenSubdiv's acceptance and the ACC checks of test_acc (no cracks, corners at the exact limit, regular
 // patches exact); `extraordinaryMax` receives the extraordinary patches' largest distance from the limit.
@@ -323,7 +312,7 @@ TEST_CASE("graphs that are no tree are refused, naming the node and what is allo
     for (std::size_t i = 0; i < g.nodes.size(); ++i) g.nodes[i].id = static_cast<std::int64_t>(10 + i);
     return g;
   };
-  auto refused = [](const BranchGraph& g) { return refusal([&] { graphToSkeleton(g); }); };
+  auto refused = [](const BranchGraph& g) { return test::refusal([&] { graphToSkeleton(g); }); };
   BranchGraph g = base();
   g.nodes[2].parent = -1;
   CHECK_THAT(refused(g), Catch::Contains("nodes[id 12].parent") && Catch::Contains("second root") && Catch::Contains("exactly one"));
@@ -350,7 +339,7 @@ TEST_CASE("graphs that are no tree are refused, naming the node and what is allo
   CHECK_THAT(refused(g), Catch::Contains("no root") || Catch::Contains("cycle"));
 
   // The same through the file format, which also names the file.
-  auto read = [](const std::string& text) { return refusal([&] { readBranchGraphJson(text, "tree.json"); }); };
+  auto read = [](const std::string& text) { return test::refusal([&] { readBranchGraphJson(text, "tree.json"); }); };
   const std::string head = R"({"format":"arbor-graph/1","nodes":[{"id":4,"parent":-1,"position":[0,0,0]},)";
   CHECK(read(head + R"({"id":5,"parent":4,"position":[0,0,1]}]})").empty());
   CHECK_THAT(read(head + R"({"id":4,"parent":4,"position":[0,0,1]}]})"),
@@ -435,7 +424,7 @@ TEST_CASE("bad skeleton files are refused naming the file and field", "[graph][j
   BranchGraph g;
   g.nodes = {at(0, 0, 0, -1), at(0, 0, 1, 0), at(0, 0.5, 1.5, 1), at(0, 0, 2, 1)};
   const std::string good = writeSkeletonJson(graphToSkeleton(g));
-  auto read = [](const std::string& text) { return refusal([&] { readSkeletonJson(text, "s.json"); }); };
+  auto read = [](const std::string& text) { return test::refusal([&] { readSkeletonJson(text, "s.json"); }); };
   CHECK(read(good).empty());
   auto replaced = [&](const std::string& from, const std::string& to) {
     std::string t = good;

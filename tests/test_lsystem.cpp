@@ -9,6 +9,7 @@
 #include <random>
 #include <sstream>
 
+#include "common/atomic_file.hpp"
 #include "common/input_error.hpp"
 #include "growth/lsystem/derivation.hpp"
 #include "growth/lsystem/lsystem_model.hpp"
@@ -16,6 +17,7 @@
 #include "growth/lsystem/turtle.hpp"
 #include "mesh/mesh_checks.hpp"
 #include "mesh/tree_mesh.hpp"
+#include "test_support.hpp"
 
 using namespace arbor;
 using namespace arbor::lsys;
@@ -36,24 +38,6 @@ std::vector<std::string> derivations(const std::string& grammar, int steps) {
 }
 
 std::string derived(const std::string& grammar) { return derive(parseLsystem(grammar, "test.lsys")).text(); }
-
-// The message of the InputError `work` throws ("" if none).
-template <class Work>
-std::string refusal(Work&& work) {
-  try {
-    work();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
-
-std::string readText(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 std::vector<std::filesystem::path> presetFiles() {
   std::vector<std::filesystem::path> out;
@@ -146,7 +130,7 @@ TEST_CASE("stochastic productions are chosen with their probabilities from the s
   CHECK(std::abs(share(s, 'a') - 0.2) < 0.02);
   CHECK(std::abs(share(s, 'b') - 0.3) < 0.02);
   CHECK(std::abs(share(s, 'c') - 0.5) < 0.02);
-  const std::string plant = readText(std::string(ARBOR_ASSET_DIR) + "/lsystems/fig-1-27.lsys");
+  const std::string plant = readFile(std::string(ARBOR_ASSET_DIR) + "/lsystems/fig-1-27.lsys");
   const Lsystem system = parseLsystem(plant, "fig-1-27.lsys");
   CHECK(derive(system).text() == derive(system).text());
   DeriveOptions other;
@@ -229,7 +213,7 @@ TEST_CASE("polygons become leaves, widths radii and '%' cuts a branch", "[lsyste
 }
 
 TEST_CASE("bad grammars are refused with file, line and column", "[lsystem]") {
-  const auto parse = [](const std::string& text) { return refusal([&] { parseLsystem(text, "bad.lsys"); }); };
+  const auto parse = [](const std::string& text) { return test::refusal([&] { parseLsystem(text, "bad.lsys"); }); };
   CHECK_THAT(parse("n: 1\naxiom: F\nF -> F(1,\n"), Catch::Contains("bad.lsys: field 'line 3, column 10'"));
   CHECK_THAT(parse("n: 1\naxiom: A(1)\nA(x) -> B(y)\n"), Catch::Contains("line 3, column 11") && Catch::Contains("undefined name 'y'"));
   CHECK_THAT(parse("n: 1\naxiom: F\nF -> (0.5) F\nF -> (0.4) FF\n"), Catch::Contains("line 3") && Catch::Contains("sum to 0.9, not 1"));
@@ -242,7 +226,7 @@ TEST_CASE("bad grammars are refused with file, line and column", "[lsystem]") {
   CHECK_THAT(parse("n: 1\naxiom: F\nA -> B(sin(1,2))\n"), Catch::Contains("line 3"));
   CHECK_THAT(parse("n: 1\naxiom: F\nA -> B(" + std::string(300, '(') + "1" + std::string(300, ')') + ")\n"),
              Catch::Contains("deeper than 100"));
-  const auto run = [](const std::string& text) { return refusal([&] { derive(parseLsystem(text, "bad.lsys")); }); };
+  const auto run = [](const std::string& text) { return test::refusal([&] { derive(parseLsystem(text, "bad.lsys")); }); };
   CHECK(run("n: 3\naxiom: A(2)\nA(x) -> A(x-1)\nA(x) : x < 5 -> A(1/x)\n") == "");  // the first production applies: no division
   CHECK_THAT(run("n: 3\naxiom: A(2)\nA(x) -> A(1/(x-1))\n"),
              Catch::Contains("field 'line 3'") && Catch::Contains("derivation step 2") && Catch::Contains("division by zero"));
@@ -260,7 +244,7 @@ TEST_CASE("every preset parses, derives, draws and meshes to a closed quad manif
   REQUIRE(files.size() >= 12);
   for (const auto& path : files) {
     INFO(path.filename().string());
-    const std::string text = readText(path);
+    const std::string text = readFile(path.string());
     const TreeModel model = readLsystemModel(text, path.string());
     CHECK(model.model() == std::string("l-system"));
     CHECK(model.name().rfind("ABOP", 0) == 0);
@@ -283,13 +267,13 @@ TEST_CASE("every preset parses, derives, draws and meshes to a closed quad manif
       CHECK(svg.rfind("<svg", 0) == 0);
       CHECK(svg.find("<path") != std::string::npos);
     } else {
-      CHECK_THAT(refusal([&] { writeLsystemSvg(system); }), Catch::Contains("out of the plane"));
+      CHECK_THAT(test::refusal([&] { writeLsystemSvg(system); }), Catch::Contains("out of the plane"));
     }
   }
 }
 
 TEST_CASE("the l-system model's parameters edit the grammar and re-derive", "[lsystem]") {
-  const std::string text = readText(std::string(ARBOR_ASSET_DIR) + "/lsystems/fig-2-6a.lsys");
+  const std::string text = readFile(std::string(ARBOR_ASSET_DIR) + "/lsystems/fig-2-6a.lsys");
   TreeModel model = readLsystemModel(text, "fig-2-6a.lsys");
   const auto params = model.parameters();
   REQUIRE(params.size() == 5 + 6);
@@ -310,7 +294,7 @@ TEST_CASE("the l-system model's parameters edit the grammar and re-derive", "[ls
   const TreeEstimate e = model.estimate(0);
   CHECK(e.nodes > 30);
   CHECK(e.nodes < 200);
-  CHECK_THAT(refusal([&] {
+  CHECK_THAT(test::refusal([&] {
                ModelReadOptions o;
                o.naturalAngles = true;
                readLsystemModel(text, "x.lsys", o);
@@ -321,7 +305,7 @@ TEST_CASE("the l-system model's parameters edit the grammar and re-derive", "[ls
   CHECK_THROWS_AS(model.grow(tiny), GenerationError);  // counted before the turtle runs
   GrowthOptions seeded;
   seeded.seed = 3;
-  const std::string stochastic = readText(std::string(ARBOR_ASSET_DIR) + "/lsystems/fig-1-27.lsys");
+  const std::string stochastic = readFile(std::string(ARBOR_ASSET_DIR) + "/lsystems/fig-1-27.lsys");
   const TreeModel plant = readLsystemModel(stochastic, "fig-1-27.lsys");
   CHECK(plant.grow({}).nodes.size() > 0);
   CHECK(plant.grow(seeded).nodes.size() == plant.grow(seeded).nodes.size());

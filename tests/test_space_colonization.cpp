@@ -9,6 +9,7 @@
 #include <limits>
 #include <sstream>
 
+#include "common/atomic_file.hpp"
 #include "common/input_error.hpp"
 #include "growth/random.hpp"
 #include "growth/space_colonization/space_colonization_model.hpp"
@@ -121,12 +122,6 @@ std::string refusedField(const std::string& text, const std::string& file = "bad
   return "(accepted)";
 }
 
-std::string readText(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 // Reference implementation: Runions et al.'s loop, every nearest node by brute force, no index, no pause.
 std::vector<Vec3> referenceColonization(const ColonizerSettings& s, const AttractionCloud& cloud) {
@@ -490,7 +485,7 @@ TEST_CASE("the model: seed, parameters, radii never decreasing toward the root, 
 TEST_CASE("every space-colonization preset grows and meshes to a closed quad manifold", "[sc]") {
   int presets = 0;
   for (const auto& e : std::filesystem::directory_iterator(std::string(ARBOR_ASSET_DIR) + "/presets")) {
-    const std::string text = readText(e.path());
+    const std::string text = readFile(e.path().string());
     if (text.find("\"space-colonization\"") == std::string::npos) continue;
     ++presets;
     INFO(e.path().filename().string());

@@ -3,6 +3,7 @@
 #include <string>
 #include <vector>
 
+#include "common/input_error.hpp"
 #include "growth/math.hpp"
 #include "growth/weber_penn/species.hpp"
 
@@ -16,7 +17,18 @@ SpeciesParams steadySpecies();
 
 double angleBetween(const Vec3& a, const Vec3& b);  // radians
 
-std::string tempPath(const std::string& name);  // in a per-run scratch directory
+std::string tempPath(const std::string& name);
+
+// The message of the InputError `work` throws ("" if it throws none).
+template <class Work>
+std::string refusal(Work&& work) {
+  try {
+    work();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}  // in a per-run scratch directory
 
 // The Arbaro species files (*.xml) in `dir`, sorted; empty, with a warning in the test's report, when the
 // folder is not there (a checkout without ../shared: the callers skip).

@@ -31,23 +31,8 @@ inline std::string typeName(const json& v) {
 // Parses a whole document; brackets nested deeper than `maxDepth` are refused before the parser sees them.
 inline json parseDocument(const std::string& text, const std::string& file, int maxDepth) {
   requireText(text, file);
-  int depth = 0;
-  bool inString = false, escaped = false;
-  for (std::size_t i = 0; i < text.size(); ++i) {
-    const char c = text[i];
-    if (inString) {
-      if (escaped) escaped = false;
-      else if (c == '\\') escaped = true;
-      else if (c == '"') inString = false;
-    } else if (c == '"') {
-      inString = true;
-    } else if (c == '{' || c == '[') {
-      if (++depth > maxDepth) {
-        throw InputError(file, "(document)", "nested deeper than " + std::to_string(maxDepth) + " levels at " + lineAndColumn(text, i));
-      }
-    } else if (c == '}' || c == ']') {
-      --depth;
-    }
+  if (const std::size_t at = jsonNestingPast(text, maxDepth); at != std::string::npos) {
+    throw InputError(file, "(document)", "nested deeper than " + std::to_string(maxDepth) + " levels at " + lineAndColumn(text, at));
   }
   try {
     return json::parse(text);

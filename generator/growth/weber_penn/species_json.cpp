@@ -7,6 +7,7 @@
 #include "common/atomic_file.hpp"
 #include "common/input_file.hpp"
 #include "common/text_util.hpp"
+#include "growth/json_fields.hpp"
 
 namespace arbor {
 
@@ -20,14 +21,7 @@ constexpr const char* kFormatValue = "arbor-species/1";
 constexpr const char* kLevelsKey = "StemLevels";
 constexpr const char* kModelKey = "model";  // the growth model a file names (growth/growth_models.cpp)
 
-std::string typeName(const json& v) {
-  if (v.is_null()) return "null";
-  if (v.is_boolean()) return "a boolean";
-  if (v.is_number()) return "a number";
-  if (v.is_string()) return "a string";
-  if (v.is_array()) return "an array";
-  return "an object";
-}
+using json_fields::typeName;
 
 // Reads one numeric field with its type and range checked.
 double readNumber(const json& v, FieldType type, double min, double max, const std::string& file,
