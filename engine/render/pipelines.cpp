@@ -6,6 +6,8 @@
 #include "spirv_acc_tesc.h"
 #include "spirv_acc_tese.h"
 #include "spirv_acc_vert.h"
+#include "spirv_line_frag.h"
+#include "spirv_line_vert.h"
 #include "spirv_flat_vert.h"
 #include "spirv_ground_frag.h"
 #include "spirv_ground_vert.h"
@@ -53,6 +55,7 @@ struct PipelineSpec {
   VkPrimitiveTopology topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
   std::uint32_t patchPoints = 0;   // > 0: tessellated
   bool treeVertices = false;       // vertex input: the tree's vertex buffer
+  bool lineVertices = false;       // vertex input: LineVertex (position, colour)
   bool depthWrite = true;
   bool wireframe = false;
   bool cullBack = true;
@@ -84,7 +87,16 @@ VkPipeline build(VkDevice device, VkRenderPass renderPass, VkPipelineLayout layo
   const std::array<VkVertexInputAttributeDescription, 3> attributes{{{0, 0, VK_FORMAT_R32G32B32A32_SFLOAT, 0},
                                                                       {1, 0, VK_FORMAT_R32G32B32A32_SFLOAT, 16},
                                                                       {2, 0, VK_FORMAT_R32G32B32A32_SFLOAT, 32}}};
+  const VkVertexInputBindingDescription lineBinding{0, sizeof(LineVertex), VK_VERTEX_INPUT_RATE_VERTEX};
+  const std::array<VkVertexInputAttributeDescription, 2> lineAttributes{{{0, 0, VK_FORMAT_R32G32B32A32_SFLOAT, 0},
+                                                                          {1, 0, VK_FORMAT_R32G32B32A32_SFLOAT, 16}}};
   VkPipelineVertexInputStateCreateInfo input{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
+  if (spec.lineVertices) {
+    input.vertexBindingDescriptionCount = 1;
+    input.pVertexBindingDescriptions = &lineBinding;
+    input.vertexAttributeDescriptionCount = static_cast<std::uint32_t>(lineAttributes.size());
+    input.pVertexAttributeDescriptions = lineAttributes.data();
+  }
   if (spec.treeVertices) {
     input.vertexBindingDescriptionCount = 1;
     input.pVertexBindingDescriptions = &binding;
@@ -152,7 +164,7 @@ VkPipeline build(VkDevice device, VkRenderPass renderPass, VkPipelineLayout layo
 
 void Pipelines::destroy(VkDevice device) {
   for (VkPipeline p : {sky, ground, tree[0], tree[1], tree[2], wireframe[0], wireframe[1], wireframe[2], twoSided[0],
-                       twoSided[1], twoSided[2], leaves, impostors, ceiling}) {
+                       twoSided[1], twoSided[2], leaves, impostors, ceiling, lines}) {
     if (p) vkDestroyPipeline(device, p, nullptr);
   }
   if (layout) vkDestroyPipelineLayout(device, layout, nullptr);
@@ -219,6 +231,11 @@ Pipelines createPipelines(const vk::VulkanContext& context, VkRenderPass renderP
                         stage(VK_SHADER_STAGE_FRAGMENT_BIT, spirv_ceiling_frag)}};
   ceiling.patchPoints = 4;
   p.ceiling = build(device, renderPass, p.layout, samples, ceiling);
+  PipelineSpec lines{{stage(VK_SHADER_STAGE_VERTEX_BIT, spirv_line_vert), stage(VK_SHADER_STAGE_FRAGMENT_BIT, spirv_line_frag)}};
+  lines.topology = VK_PRIMITIVE_TOPOLOGY_LINE_LIST;
+  lines.lineVertices = true;
+  lines.cullBack = false;
+  p.lines = build(device, renderPass, p.layout, samples, lines);
   const PipelineSpec* specs[3] = {&flat, &pn, &acc};
   for (int m = 0; m < 3; ++m) {
     p.tree[m] = build(device, renderPass, p.layout, samples, *specs[m]);

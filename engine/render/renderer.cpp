@@ -223,6 +223,18 @@ void TreeRenderer::beginFrame(VkCommandBuffer cmd, const Camera& camera, VkExten
   if (timestamps_) vkCmdResetQueryPool(cmd, timestamps_, 0, kTimestampCount);
 }
 
+void TreeRenderer::drawLines(VkCommandBuffer cmd, VkBuffer vertices, std::uint32_t count, const glm::mat4& model) {
+  if (count == 0) return;
+  DrawConstants constants{};
+  std::memcpy(constants.model, glm::value_ptr(model), sizeof constants.model);
+  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.layout, 0, 1, &sets_[0], 0, nullptr);
+  vkCmdPushConstants(cmd, pipelines_.layout, pipelines_.pushStages, 0, sizeof constants, &constants);
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.lines);
+  const VkDeviceSize offset = 0;
+  vkCmdBindVertexBuffers(cmd, 0, 1, &vertices, &offset);
+  vkCmdDraw(cmd, count, 1, 0, 0);
+}
+
 void TreeRenderer::draw(VkCommandBuffer cmd, VkExtent2D extent, const RenderSettings& s, const std::vector<TreeInstance>& instances) {
   const VkViewport viewport{0.0f, 0.0f, static_cast<float>(extent.width), static_cast<float>(extent.height), 0.0f, 1.0f};
   const VkRect2D scissor{{0, 0}, extent};

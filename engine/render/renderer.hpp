@@ -89,6 +89,9 @@ class TreeRenderer {
   void beginFrame(VkCommandBuffer cmd, const Camera& camera, VkExtent2D extent, const RenderSettings& settings);
   // Inside the render pass: sky, ground and every instance (statistics and time cover all of them).
   void draw(VkCommandBuffer cmd, VkExtent2D extent, const RenderSettings& settings, const std::vector<TreeInstance>& instances);
+  // Inside the render pass, after draw: `count` LineVertex ends (pairs) from `vertices`, placed by `model`,
+  // depth-tested against the scene. Not counted in the statistics.
+  void drawLines(VkCommandBuffer cmd, VkBuffer vertices, std::uint32_t count, const glm::mat4& model);
   // After the frame's commands have completed.
   FrameStats stats() const;
 
