@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 namespace arbor::sc {
 
@@ -41,12 +43,47 @@ Colonizer::Colonizer(const ColonizerSettings& settings) : settings_(settings) {
 
 void Colonizer::addCloud(const AttractionCloud& cloud) {
   endIterationEarly();
-  const auto index = static_cast<std::uint32_t>(clouds_.size());
   clouds_.push_back(cloud);
-  for (const Vec3& p : sampleCloud(cloud, cloudSeed(settings_.seed, index))) points_.push_back({p, index, kAlive});
-  maxInfluence_ = std::max(maxInfluence_, cloud.influence);
-  maxKill_ = std::max(maxKill_, cloud.kill);
+  sampleInto(clouds_.size() - 1);
+  refreshRadii();
   settle();
+}
+
+void Colonizer::replaceCloud(std::size_t index, const AttractionCloud& cloud) {
+  endIterationEarly();
+  clouds_.at(index) = cloud;
+  dropPoints(index);
+  sampleInto(index);
+  refreshRadii();
+  settle();
+}
+
+void Colonizer::removeCloud(std::size_t index) {
+  if (index >= clouds_.size()) throw std::out_of_range("no cloud " + std::to_string(index));
+  endIterationEarly();
+  clouds_.erase(clouds_.begin() + static_cast<std::ptrdiff_t>(index));
+  dropPoints(index);
+  for (AttractionPoint& p : points_)
+    if (p.cloud > index) --p.cloud;
+  refreshRadii();
+  settle();
+}
+
+void Colonizer::sampleInto(std::size_t cloud) {
+  const auto index = static_cast<std::uint32_t>(cloud);
+  for (const Vec3& p : sampleCloud(clouds_[cloud], cloudSeed(settings_.seed, cloud))) points_.push_back({p, index, kAlive});
+}
+
+void Colonizer::dropPoints(std::size_t cloud) {
+  points_.erase(std::remove_if(points_.begin(), points_.end(), [&](const AttractionPoint& p) { return p.cloud == cloud; }), points_.end());
+}
+
+void Colonizer::refreshRadii() {
+  maxInfluence_ = maxKill_ = 0;
+  for (const AttractionCloud& c : clouds_) {
+    maxInfluence_ = std::max(maxInfluence_, c.influence);
+    maxKill_ = std::max(maxKill_, c.kill);
+  }
 }
 
 void Colonizer::addObstacle(const Obstacle& obstacle) {
@@ -55,7 +92,14 @@ void Colonizer::addObstacle(const Obstacle& obstacle) {
   settle();
 }
 
+void Colonizer::replaceObstacle(std::size_t index, const Obstacle& obstacle) {
+  endIterationEarly();
+  obstacles_.at(index) = obstacle;
+  settle();
+}
+
 void Colonizer::removeObstacle(std::size_t index) {
+  if (index >= obstacles_.size()) throw std::out_of_range("no obstacle " + std::to_string(index));
   endIterationEarly();
   obstacles_.erase(obstacles_.begin() + static_cast<std::ptrdiff_t>(index));
   settle();

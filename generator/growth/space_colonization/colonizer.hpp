@@ -46,6 +46,11 @@ class Colonizer {
   // Edits. Each ends an iteration in progress where it stands and leaves the invariants holding (no live point
   // within kill distance of an enabled node; the disabled set closed under descendants).
   void addCloud(const AttractionCloud& cloud);  // its points from cloudSeed(seed, its index)
+  // The modeller's moves and resizes: the cloud's points sampled anew (same stream, so a moved cloud's points
+  // move with it); the nodes stay where they are.
+  void replaceCloud(std::size_t index, const AttractionCloud& cloud);
+  void removeCloud(std::size_t index);  // its points go; later clouds move down one index
+  void replaceObstacle(std::size_t index, const Obstacle& obstacle);
   void addObstacle(const Obstacle& obstacle);
   void removeObstacle(std::size_t index);
   void setGravity(double gravity);
@@ -82,6 +87,9 @@ class Colonizer {
   void settle();                 // after an edit or a rewind: flags, kills and attractions from scratch
   void noteNode(std::uint32_t node, std::uint32_t killAge);  // kills and attracts the points around it
   void reindex();                // the index over the live points only
+  void sampleInto(std::size_t cloud);  // appends the cloud's points, alive
+  void dropPoints(std::size_t cloud);  // removes the cloud's points
+  void refreshRadii();                 // the largest influence and kill radii over the clouds
 
   ColonizerSettings settings_;
   std::vector<Node> nodes_;
