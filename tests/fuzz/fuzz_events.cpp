@@ -4,7 +4,7 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   return arbor::fuzz::guarded(data, size, [](const std::string& text) {
-    for (const arbor::cli::WindowEvent& e : arbor::cli::parseEvents(text)) {
+    for (const arbor::viewer::WindowEvent& e : arbor::viewer::parseEvents(text)) {
       if (e.frame < 1 || (e.action == "resize" && (e.width < 1 || e.height < 1 || e.width > 8192 || e.height > 8192))) std::abort();
     }
   });

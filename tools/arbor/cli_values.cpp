@@ -17,6 +17,10 @@ namespace {
 
 namespace fs = std::filesystem;
 
+std::string between(double lo, double hi) { return "a finite number from " + formatNumber(lo) + " to " + formatNumber(hi); }
+
+}  // namespace
+
 bool parseFinite(const std::string& text, double& out) {
   if (text.empty() || std::isspace(static_cast<unsigned char>(text.front()))) return false;
   char* end = nullptr;
@@ -24,10 +28,6 @@ bool parseFinite(const std::string& text, double& out) {
   out = std::strtod(text.c_str(), &end);
   return end == text.c_str() + text.size() && errno != ERANGE && std::isfinite(out);
 }
-
-std::string between(double lo, double hi) { return "a finite number from " + formatNumber(lo) + " to " + formatNumber(hi); }
-
-}  // namespace
 
 CLI::Validator Number(double lo, double hi) {
   return CLI::Validator(

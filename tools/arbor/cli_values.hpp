@@ -9,6 +9,8 @@
 
 namespace arbor::cli {
 
+// The whole text as one finite number (no leading blank, no trailing text, no overflow).
+bool parseFinite(const std::string& text, double& out);
 // A finite decimal number within [lo, hi] ("nan", "inf", "1e999", "" are refused).
 CLI::Validator Number(double lo, double hi);
 // 0 (off) or a finite number within [lo, hi]: options where tiny values would ask for unbounded work.

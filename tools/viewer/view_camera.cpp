@@ -4,7 +4,7 @@
 #include <cmath>
 
 
-namespace arbor::cli {
+namespace arbor::viewer {
 
 namespace {
 
@@ -66,4 +66,4 @@ render::Camera cameraOnPath(const std::vector<render::Camera>& keys, int frame, 
   return c;
 }
 
-}  // namespace arbor::cli
+}  // namespace arbor::viewer

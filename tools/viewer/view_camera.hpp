@@ -6,7 +6,7 @@
 
 #include "render/camera.hpp"
 
-namespace arbor::cli {
+namespace arbor::viewer {
 
 struct WalkInput {
   float forward = 0, right = 0, up = 0;  // -1..1 each
@@ -31,4 +31,4 @@ struct ViewCamera {
 // The camera at frame `frame` of `frames`, moving evenly from the first key to the last.
 render::Camera cameraOnPath(const std::vector<render::Camera>& keys, int frame, int frames);
 
-}  // namespace arbor::cli
+}  // namespace arbor::viewer

@@ -6,8 +6,7 @@
 
 #include <imgui.h>
 
-
-namespace arbor::cli {
+namespace arbor::viewer {
 
 namespace {
 
@@ -31,8 +30,25 @@ bool parameterSlider(TreeModel& model, std::size_t index, const ModelParameter& 
 
 }  // namespace
 
-void drawPanel(ViewState& state, const render::ForestFrame& frame, const render::FrameStats& stats, std::vector<TreeSource>& sources,
-               const std::vector<std::string>& names, const std::string& device) {
+bool modelSliders(TreeModel& model) {
+  const std::vector<ModelParameter> parameters = model.parameters();
+  bool edited = false;
+  std::size_t i = 0;
+  while (i < parameters.size()) {
+    // A run of parameters with one group: the tree's own in the open, each other group under its heading.
+    const std::string& group = parameters[i].group;
+    std::size_t end = i;
+    while (end < parameters.size() && parameters[end].group == group) ++end;
+    const bool open = group.empty() || ImGui::TreeNode(group.c_str());
+    for (; open && i < end; ++i) edited |= parameterSlider(model, i, parameters[i]);
+    if (open && !group.empty()) ImGui::TreePop();
+    i = end;
+  }
+  return edited;
+}
+
+void drawPanel(ViewState& state, const render::ForestFrame& frame, const render::FrameStats& stats, const std::string& device,
+               ViewerScene& scene) {
   ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowSize(ImVec2(430, 540), ImGuiCond_FirstUseEver);
   ImGui::Begin("Arbor");
@@ -44,76 +60,39 @@ void drawPanel(ViewState& state, const render::ForestFrame& frame, const render:
   ImGui::Text("triangles %llu, %u trees drawn, %u culled", static_cast<unsigned long long>(stats.triangles), frame.visible, frame.culled);
   ImGui::Text("detail: %u full, %u one level faked, %u two (%u far)", frame.perDetail[0], frame.perDetail[1], frame.perDetail[2],
               frame.far);
-  render::RenderSettings& s = state.settings;
-  int mode = static_cast<int>(s.mode);
-  ImGui::Combo("mode", &mode, "flat\0pn\0acc\0");
-  s.mode = static_cast<render::RenderMode>(mode);
-  bool adaptive = s.adaptivePixels > 0.0f;
-  ImGui::Checkbox("adaptive", &adaptive);
-  if (adaptive) {
-    if (s.adaptivePixels <= 0.0f) s.adaptivePixels = 8.0f;
-    ImGui::SliderFloat("edge pixels", &s.adaptivePixels, 1.0f, 64.0f);
-  } else {
-    s.adaptivePixels = 0.0f;
-    ImGui::SliderFloat("factor", &s.tessLevel, 1.0f, 64.0f);
-  }
-  ImGui::SliderFloat("displacement", &s.displacement, 0.0f, 1.0f);
-  ImGui::Checkbox("wireframe", &s.wireframe);
-  ImGui::Checkbox("leaves", &s.leaves);
-  ImGui::SliderFloat("leaf distance", &s.leafLodDistance, 0.0f, 200.0f);
-  int shadow = static_cast<int>(s.shadowLeaves);
-  ImGui::SliderInt("shadow leaves", &shadow, 0, 500);
-  s.shadowLeaves = static_cast<std::uint32_t>(shadow);
-  ImGui::SliderFloat("full mesh within (m)", &state.detail.full, 0.0f, 300.0f);
-  ImGui::SliderFloat("one level faked within (m)", &state.detail.reduced, 0.0f, 600.0f);
-  ImGui::SliderFloat("far beyond (m)", &state.detail.far, 0.0f, 1000.0f);
-  ImGui::SliderFloat("sun azimuth", &state.lightAzimuth, -180.0f, 180.0f);
-  ImGui::SliderFloat("sun elevation", &state.lightElevation, -10.0f, 90.0f);
-  s.lightDirection = render::sunDirection(state.lightAzimuth, state.lightElevation);
-  if (state.estimates.size() != sources.size()) updateEstimates(state, sources, names);
-  bool edited = false;
-  for (std::size_t k = 0; k < sources.size(); ++k) {
-    if (!ImGui::CollapsingHeader(names[k].c_str())) continue;
-    ImGui::PushID(static_cast<int>(k));
-    const TreeEstimate& e = state.estimates[k];
-    ImGui::Text("about %.3g nodes, %.3g leaves, %.3g quads", e.nodes, e.leaves, e.quads);
-    TreeModel* model = sources[k].model();
-    if (!model) ImGui::TextWrapped("a skeleton given whole: no parameters to edit");
-    const std::vector<ModelParameter> parameters = model ? model->parameters() : std::vector<ModelParameter>{};
-    std::size_t i = 0;
-    while (i < parameters.size()) {
-      // A run of parameters with one group: the tree's own in the open, each other group under its heading.
-      const std::string& group = parameters[i].group;
-      std::size_t end = i;
-      while (end < parameters.size() && parameters[end].group == group) ++end;
-      const bool open = group.empty() || ImGui::TreeNode(group.c_str());
-      for (; open && i < end; ++i) edited |= parameterSlider(*model, i, parameters[i]);
-      if (open && !group.empty()) ImGui::TreePop();
-      i = end;
+  if (ImGui::CollapsingHeader("rendering", ImGuiTreeNodeFlags_DefaultOpen)) {
+    render::RenderSettings& s = state.settings;
+    int mode = static_cast<int>(s.mode);
+    ImGui::Combo("mode", &mode, "flat\0pn\0acc\0");
+    s.mode = static_cast<render::RenderMode>(mode);
+    bool adaptive = s.adaptivePixels > 0.0f;
+    ImGui::Checkbox("adaptive", &adaptive);
+    if (adaptive) {
+      if (s.adaptivePixels <= 0.0f) s.adaptivePixels = 8.0f;
+      ImGui::SliderFloat("edge pixels", &s.adaptivePixels, 1.0f, 64.0f);
+    } else {
+      s.adaptivePixels = 0.0f;
+      ImGui::SliderFloat("factor", &s.tessLevel, 1.0f, 64.0f);
     }
-    ImGui::PopID();
+    ImGui::SliderFloat("displacement", &s.displacement, 0.0f, 1.0f);
+    ImGui::Checkbox("wireframe", &s.wireframe);
+    ImGui::Checkbox("leaves", &s.leaves);
+    ImGui::SliderFloat("leaf distance", &s.leafLodDistance, 0.0f, 200.0f);
+    int shadow = static_cast<int>(s.shadowLeaves);
+    ImGui::SliderInt("shadow leaves", &shadow, 0, 500);
+    s.shadowLeaves = static_cast<std::uint32_t>(shadow);
+    ImGui::SliderFloat("full mesh within (m)", &state.detail.full, 0.0f, 300.0f);
+    ImGui::SliderFloat("one level faked within (m)", &state.detail.reduced, 0.0f, 600.0f);
+    ImGui::SliderFloat("far beyond (m)", &state.detail.far, 0.0f, 1000.0f);
+    ImGui::SliderFloat("sun azimuth", &state.lightAzimuth, -180.0f, 180.0f);
+    ImGui::SliderFloat("sun elevation", &state.lightElevation, -10.0f, 90.0f);
+    s.lightDirection = render::sunDirection(state.lightAzimuth, state.lightElevation);
   }
-  if (edited) updateEstimates(state, sources, names);
-  if (state.refusal.empty()) {
-    if (ImGui::Button("regenerate")) state.regenerate = true;
-  } else {
-    // Past a limit the trees are not regrown: the viewer would freeze for seconds and then refuse anyway.
-    ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.35f, 1.0f), "not regenerated:");
-    ImGui::TextWrapped("%s", state.refusal.c_str());
-  }
+  scene.panel(state);
+  ImGui::Separator();
   ImGui::Text("WASD move, right mouse look, Shift fast, Q/E down/up");
   ImGui::Text("Tab orbit/walk, F11 fullscreen, F12 screenshot, F1 panel");
   ImGui::End();
 }
 
-void updateEstimates(ViewState& state, const std::vector<TreeSource>& sources, const std::vector<std::string>& names) {
-  state.estimates.clear();
-  state.refusal.clear();
-  for (std::size_t k = 0; k < sources.size(); ++k) {
-    state.estimates.push_back(sources[k].estimate());
-    const std::string excess = state.estimates.back().excess(TreeLimits{});
-    if (!excess.empty() && state.refusal.empty()) state.refusal = names[k] + ": " + excess;
-  }
-}
-
-}  // namespace arbor::cli
+}  // namespace arbor::viewer

@@ -1,36 +1,20 @@
 #pragma once
-// The viewer's Dear ImGui panel and the state it edits while the viewer runs.
+// The viewer's Dear ImGui panel: what every scene shows (figures, render settings, keys) around the scene's own
+// part, and the sliders of a growth model's parameters.
 #include <string>
-#include <vector>
 
 #include "growth/growth_model.hpp"
-#include "tree/tree_source.hpp"
-#include "render/forest.hpp"
-#include "render/renderer.hpp"
+#include "viewer.hpp"
 
-namespace arbor::cli {
+namespace arbor::viewer {
 
-// What the panel changes while the viewer runs.
-struct ViewState {
-  render::RenderSettings settings;
-  render::DetailDistances detail;
-  float lightAzimuth = 25.0f, lightElevation = 40.0f;
-  bool showOverlay = true;
-  bool regenerate = false;
-  std::vector<float> frameTimes = std::vector<float>(120, 0.0f);
-  std::size_t frameIndex = 0;
-  std::vector<TreeEstimate> estimates;  // per tree source, redone whenever a slider moves
-  std::string refusal;                  // why the trees as set would not be grown ("" when they would)
-};
+// Figures (device, frame-time graph, triangles, trees per detail), render settings, the scene's part, the keys.
+// Between the overlay's newFrame and render.
+void drawPanel(ViewState& state, const render::ForestFrame& frame, const render::FrameStats& stats, const std::string& device,
+               ViewerScene& scene);
 
-// The estimate of every source and, when one passes the limits, the refusal that stops regeneration.
-void updateEstimates(ViewState& state, const std::vector<TreeSource>& sources, const std::vector<std::string>& names);
+// Every numeric parameter of the model as a slider over its documented range, grouped as the model groups
+// them; true when one moved.
+bool modelSliders(TreeModel& model);
 
-// Figures (device, frame-time graph, triangles, trees per detail), render settings, and every numeric
-// parameter of each tree's growth model (grouped as the model groups them; a skeleton given whole has none)
-// with a regenerate button. Between the
-// overlay's newFrame and render.
-void drawPanel(ViewState& state, const render::ForestFrame& frame, const render::FrameStats& stats, std::vector<TreeSource>& sources,
-               const std::vector<std::string>& names, const std::string& device);
-
-}  // namespace arbor::cli
+}  // namespace arbor::viewer
