@@ -307,6 +307,73 @@ TEST_CASE("a cloud added after convergence leaves every old node unchanged and h
   requireSegmentsOfLengthD(c);
 }
 
+TEST_CASE("the modeller's edits: a moved, resized or removed cloud keeps every node, and its points follow it", "[sc]") {
+  Colonizer c = smallTree();
+  c.step(150);  // paused mid-growth, as an artist would edit
+  AttractionCloud side = crown(200);
+  side.center = Vec3(0.8, 0, 1.0);
+  side.size = Vec3(0.3);
+  c.addCloud(side);
+  const std::vector<Node> old = c.nodes();
+  const auto pointsOf = [&](std::uint32_t cloud) {
+    std::vector<Vec3> out;
+    for (const AttractionPoint& p : c.points())
+      if (p.cloud == cloud) out.push_back(p.position);
+    return out;
+  };
+  const std::vector<Vec3> before = pointsOf(1);
+  AttractionCloud moved = side;
+  moved.center += Vec3(-1.6, 0.2, 0.1);
+  c.replaceCloud(1, moved);
+  REQUIRE(sameNodes(c.nodes(), old));
+  const std::vector<Vec3> after = pointsOf(1);
+  REQUIRE(after.size() == side.points);
+  for (std::size_t i = 0; i < after.size(); ++i) {
+    REQUIRE(insideCloud(moved, after[i]));
+    REQUIRE(glm::length(after[i] - before[i] - (moved.center - side.center)) < 1e-9);  // the same stream, moved rigidly
+  }
+  requireKillInvariant(c);
+  requireAttractions(c);
+
+  AttractionCloud bigger = moved;
+  bigger.size = Vec3(0.6);
+  c.replaceCloud(1, bigger);
+  for (const Vec3& p : pointsOf(1)) REQUIRE(insideCloud(bigger, p));
+  REQUIRE(sameNodes(c.nodes(), old));
+
+  const std::size_t firstCloudPoints = pointsOf(0).size();
+  c.removeCloud(1);
+  REQUIRE(c.clouds().size() == 1);
+  REQUIRE(c.points().size() == firstCloudPoints);
+  REQUIRE(pointsOf(1).empty());
+  REQUIRE(sameNodes(c.nodes(), old));
+  requireKillInvariant(c);
+  requireAttractions(c);
+  REQUIRE_THROWS_AS(c.removeCloud(3), std::out_of_range);
+  c.growToEnd();
+  requireOneRootedTree(c);
+  requireSegmentsOfLengthD(c);
+}
+
+TEST_CASE("an obstacle moved onto branches disables them and their descendants; moved away, they come back", "[sc]") {
+  Colonizer c = smallTree();
+  c.growToEnd();
+  const std::vector<Node> grown = c.nodes();
+  Obstacle o;
+  o.shape = ObstacleShape::Sphere;
+  o.center = Vec3(5, 5, 5);  // far from the tree
+  o.size = Vec3(0.2);
+  c.addObstacle(o);
+  REQUIRE(sameNodes(c.nodes(), grown));
+  o.center = grown.back().position;  // onto a tip's segment
+  c.replaceObstacle(0, o);
+  REQUIRE(!c.nodes().back().enabled);
+  requireObstaclesRespected(c);
+  o.center = Vec3(5, 5, 5);
+  c.replaceObstacle(0, o);
+  REQUIRE(sameNodes(c.nodes(), grown));
+}
+
 TEST_CASE("rewinding to age a gives the snapshot at age a and regrowing reproduces the original", "[sc]") {
   Colonizer c = smallTree(0.3);
   std::vector<Colonizer> snapshots;  // snapshots[a]: as iteration a ended

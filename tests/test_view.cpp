@@ -5,9 +5,13 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <sstream>
+#include <utility>
+#include <vector>
 
 #include "image/image_compare.hpp"
 #include "image/png_io.hpp"
+#include "render_support.hpp"
 #include "test_support.hpp"
 
 namespace fs = std::filesystem;
@@ -170,4 +174,117 @@ TEST_CASE("the viewer refuses bad scripts with 2, naming the file, line or optio
   CHECK(events.exitCode == 2);
   CHECK_THAT(events.output, Catch::Contains("--events"));
   CHECK_FALSE(fs::exists(test::tempPath("view-bad")));  // nothing written
+}
+
+namespace {
+
+// What the modeller logs per scripted frame: "...; age A, N nodes (E enabled), P live points, C clouds, O obstacles, STATE".
+struct ModellerFrame {
+  unsigned age = 0;
+  std::size_t nodes = 0, enabled = 0, live = 0, clouds = 0, obstacles = 0;
+  std::string state;
+};
+
+std::vector<ModellerFrame> modellerFrames(const std::string& output) {
+  std::vector<ModellerFrame> frames;
+  std::istringstream in(output);
+  for (std::string line; std::getline(in, line);) {
+    const std::size_t at = line.find("; age ");
+    if (line.rfind("arbor view: frame ", 0) != 0 || at == std::string::npos) continue;
+    ModellerFrame f;
+    char state[32] = {};
+    if (std::sscanf(line.c_str() + at, "; age %u, %zu nodes (%zu enabled), %zu live points, %zu clouds, %zu obstacles, %31s", &f.age, &f.nodes,
+                    &f.enabled, &f.live, &f.clouds, &f.obstacles, state) == 7) {
+      f.state = state;
+      frames.push_back(f);
+    }
+  }
+  return frames;
+}
+
+// The node count the modeller starts with: the model grown to the end ("modeller: NAME, N nodes").
+std::size_t startingNodes(const std::string& output) {
+  const std::size_t at = output.find(" nodes\n");
+  REQUIRE(at != std::string::npos);
+  const std::size_t from = output.rfind(", ", at);
+  return std::stoul(output.substr(from + 2, at - from - 2));
+}
+
+}  // namespace
+
+TEST_CASE("the modeller grows, pauses, rewinds, regrows and takes clouds and obstacles from a script", "[view][sc]") {
+  const std::string dir = freshDir("view-modeller");
+  const Result r = run(kNoDisplay, "sc-open-broadleaf --size 200x150 --frames 9 --out " + dir +
+                                       " --events 1:rewind=0,2:step=300,3:rewind=10,4:finish,5:add-cloud=sphere/3.8/0/4.6/1/1/1/400/1.5/0.3,6:finish,"
+                                       "7:add-obstacle=box/0/0/6/3/3/1,8:remove-obstacle=0,9:remove-cloud=1");
+  INFO(r.output);
+  REQUIRE(r.exitCode == 0);
+  const std::vector<ModellerFrame> f = modellerFrames(r.output);
+  REQUIRE(f.size() == 9);
+  const std::size_t grown = startingNodes(r.output);
+  CHECK(f[0].age == 0);
+  CHECK(f[0].nodes == 13);  // the trunk's twelve segments
+  CHECK(f[1].nodes > f[0].nodes);
+  CHECK(f[1].nodes <= f[0].nodes + 300);  // at most one node per node processed
+  CHECK(f[2].age == 10);
+  CHECK(f[3].nodes == grown);  // regrown from a rewind: the same tree
+  CHECK(f[3].state == "finished");
+  CHECK(f[4].clouds == 2);
+  CHECK(f[4].live > f[3].live);  // beside the crown: some of its 400 points die at once, the rest attract
+  CHECK(f[4].live <= f[3].live + 400);
+  CHECK(f[5].nodes > f[4].nodes);      // grown out toward the new cloud
+  CHECK(f[5].live < f[4].live);
+  CHECK(f[6].obstacles == 1);
+  CHECK(f[6].enabled < f[6].nodes);   // the slab cut through the crown
+  CHECK(f[6].nodes == f[5].nodes);    // disabled, not deleted
+  CHECK(f[7].enabled == f[7].nodes);  // removed: every branch back
+  CHECK(f[8].clouds == 1);
+  CHECK(f[8].nodes == f[7].nodes);    // nodes never go with a cloud
+  CHECK(fs::exists(fs::path(dir) / "frame-0009.png"));
+}
+
+TEST_CASE("the modeller's picture: tree, cloud and obstacle wireframes, live points (golden)", "[view][sc][golden]") {
+  const std::string dir = freshDir("view-modeller-golden");
+  const Result r = run(kNoDisplay, "sc-around-sphere --size 320x240 --frames 1 --out " + dir + " --events 1:rewind=25");
+  INFO(r.output);
+  REQUIRE(r.exitCode == 0);
+  const test::GoldenCheck golden = test::checkGolden("modeller-around-sphere", readPng((fs::path(dir) / "frame-0001.png").string()));
+  INFO(golden.report);
+  CHECK(golden.ok);
+}
+
+TEST_CASE("the modeller in a window: growing frame by frame with the panel on", "[view][sc]") {
+  const std::string dir = freshDir("view-modeller-window");
+  const Result r = run(kXvfb, "sc-between-walls --size 320x240 --frames 6 --overlay --out " + dir + " --events 1:rewind=0,2:grow,5:pause");
+  INFO(r.output);
+  REQUIRE(r.exitCode == 0);
+  CHECK_THAT(r.output, Catch::Contains("scripted on"));
+  const std::vector<ModellerFrame> f = modellerFrames(r.output);
+  REQUIRE(f.size() == 6);
+  CHECK(f[0].age == 0);
+  for (std::size_t k = 1; k < 4; ++k) {
+    CHECK(f[k].state == "growing");
+    CHECK(f[k].nodes > f[k - 1].nodes);
+  }
+  CHECK(f[4].state == "paused");
+  CHECK(f[5].nodes == f[4].nodes);
+}
+
+TEST_CASE("the modeller refuses bad scripts with 2 before anything is drawn", "[view][sc]") {
+  const std::string dir = freshDir("view-modeller-bad");
+  const std::pair<const char*, const char*> cases[] = {
+      {"sc-open-broadleaf --events 2:remove-cloud=3", "no cloud 3"},
+      {"sc-open-broadleaf --events 2:add-obstacle=box/0/0/0.5/1/1/1", "trunk"},
+      {"sc-open-broadleaf --events 2:add-cloud=sphere/0/0/5/1/1/1/100/0.2/0.5", "kill"},
+      {"sc-open-broadleaf --events 2:open=palm", "space-colonization"},
+      {"palm --events 2:grow", "modeller"},
+  };
+  for (const auto& [arguments, says] : cases) {
+    const Result r = run(kNoDisplay, std::string(arguments) + " --frames 3 --out " + dir);
+    INFO(arguments << "\n" << r.output);
+    CHECK(r.exitCode == 2);
+    CHECK_THAT(r.output, Catch::Contains("--events"));
+    CHECK_THAT(r.output, Catch::Contains(says));
+    CHECK_FALSE(fs::exists(dir));
+  }
 }

@@ -50,7 +50,7 @@ bool modelSliders(TreeModel& model) {
 void drawPanel(ViewState& state, const render::ForestFrame& frame, const render::FrameStats& stats, const std::string& device,
                ViewerScene& scene) {
   ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(430, 540), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(430, 640), ImGuiCond_FirstUseEver);
   ImGui::Begin("Arbor");
   ImGui::Text("%s", device.c_str());
   const float last = state.frameTimes[(state.frameIndex + state.frameTimes.size() - 1) % state.frameTimes.size()];
@@ -60,6 +60,7 @@ void drawPanel(ViewState& state, const render::ForestFrame& frame, const render:
   ImGui::Text("triangles %llu, %u trees drawn, %u culled", static_cast<unsigned long long>(stats.triangles), frame.visible, frame.culled);
   ImGui::Text("detail: %u full, %u one level faked, %u two (%u far)", frame.perDetail[0], frame.perDetail[1], frame.perDetail[2],
               frame.far);
+  scene.panel(state);  // first: what the scene is about (the modeller's controls, the forest's models)
   if (ImGui::CollapsingHeader("rendering", ImGuiTreeNodeFlags_DefaultOpen)) {
     render::RenderSettings& s = state.settings;
     int mode = static_cast<int>(s.mode);
@@ -88,7 +89,6 @@ void drawPanel(ViewState& state, const render::ForestFrame& frame, const render:
     ImGui::SliderFloat("sun elevation", &state.lightElevation, -10.0f, 90.0f);
     s.lightDirection = render::sunDirection(state.lightAzimuth, state.lightElevation);
   }
-  scene.panel(state);
   ImGui::Separator();
   ImGui::Text("WASD move, right mouse look, Shift fast, Q/E down/up");
   ImGui::Text("Tab orbit/walk, F11 fullscreen, F12 screenshot, F1 panel");
