@@ -203,6 +203,22 @@ bool GrowthScene::handle(const WindowEvent& e) {
   return true;
 }
 
+bool GrowthScene::replaceCloud(std::size_t index, const sc::AttractionCloud& cloud) {
+  sc::SpaceColonization edited = model_;
+  edited.clouds.at(index) = cloud;
+  try {
+    edited = checked(edited);
+  } catch (const InputError& error) {
+    message_ = error.what();
+    return false;
+  }
+  colonizer_->replaceCloud(index, edited.clouds[index]);
+  model_ = edited;
+  message_.clear();
+  treeChanged_ = linesChanged_ = true;
+  return true;
+}
+
 bool GrowthScene::tryEdit(const WindowEvent& e) {
   try {
     apply(editedModel(model_, e), e);
@@ -388,6 +404,23 @@ void GrowthScene::panel(ViewState&) {
       const glm::vec3 color = cloudColor(i);
       ImGui::TextColored(ImVec4(color.r, color.g, color.b, 1.0f), "cloud %zu: %s, %u points", i, sc::cloudShapeName(cl.shape), cl.points);
       editor("cloud", i, cl.center, cl.size, true);
+      // Shape, point count and radii: the same cloud index, its points sampled anew.
+      ImGui::PushID(static_cast<int>(1000 + i));
+      sc::AttractionCloud changed = cl;
+      int shape = static_cast<int>(cl.shape), points = static_cast<int>(cl.points);
+      auto influence = static_cast<float>(cl.influence), kill = static_cast<float>(cl.kill);
+      bool edited = ImGui::Combo("shape", &shape, "sphere\0ellipsoid\0cone\0box\0");
+      edited |= ImGui::InputInt("points", &points, 100, 1000);
+      edited |= ImGui::DragFloat("influence", &influence, 0.01f, 0.01f, 100.0f);
+      edited |= ImGui::DragFloat("kill", &kill, 0.01f, 0.001f, 100.0f);
+      ImGui::PopID();
+      if (edited) {
+        changed.shape = static_cast<sc::CloudShape>(shape);
+        changed.points = static_cast<std::uint32_t>(std::clamp(points, 1, 1000000));
+        changed.influence = influence;
+        changed.kill = kill;
+        replaceCloud(i, changed);
+      }
     }
     if (ImGui::Button("add sphere cloud")) {
       WindowEvent e;

@@ -47,6 +47,7 @@ class GrowthScene final : public ViewerScene {
   void goToAge(std::uint32_t age);    // back by rewinding, forward by growing
   void apply(const sc::SpaceColonization& edited, const WindowEvent& event);  // the colonizer follows the edit
   bool tryEdit(const WindowEvent& event);  // the panel's edits: false (and a message) when the model refuses
+  bool replaceCloud(std::size_t index, const sc::AttractionCloud& cloud);  // likewise, for shape, points and radii
   void rebuildTree(render::TreeRenderer& renderer);
   void rebuildLines();
   render::Bounds workingBounds() const;  // world space, as the tree stands
