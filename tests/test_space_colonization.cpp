@@ -630,6 +630,24 @@ TEST_CASE("every space-colonization preset grows and meshes to a closed quad man
   CHECK(presets == 4);
 }
 
+TEST_CASE("step stops where iteration a ends: the state rewinding to a gives, whatever the step size", "[sc]") {
+  Colonizer full = smallTree(0.3);
+  full.growToEnd();
+  for (const std::uint32_t a : {1u, 7u, full.age() / 2}) {
+    Colonizer rewound = full;
+    rewound.rewind(a);
+    for (const std::size_t size : {std::size_t{1}, std::size_t{13}, std::numeric_limits<std::size_t>::max()}) {
+      INFO("age " << a << ", step size " << size);
+      Colonizer c = smallTree(0.3);
+      while (!c.finished() && c.age() < a) c.step(size, a);
+      REQUIRE(c.age() == a);
+      REQUIRE(c.step(size, a) == 0);
+      REQUIRE(sameNodes(c.nodes(), rewound.nodes()));
+      REQUIRE(liveSet(c) == liveSet(rewound));
+    }
+  }
+}
+
 TEST_CASE("100,000 attraction points colonized to the end", "[.bench][sc]") {
   ColonizerSettings s;
   s.segmentLength = 0.1;

@@ -189,9 +189,9 @@ void Colonizer::grow(const Grower& g) {
   noteNode(node, age_ + 1);
 }
 
-std::size_t Colonizer::step(std::size_t maxNodes) {
+std::size_t Colonizer::step(std::size_t maxNodes, std::uint32_t untilAge) {
   std::size_t processed = 0;
-  while (processed < maxNodes && !finished_) {
+  while (processed < maxNodes && !finished_ && age_ < untilAge) {
     if (cursor_ == pending_.size()) {
       beginIteration();
       if (finished_) break;

@@ -56,9 +56,9 @@ class Colonizer {
   void removeObstacle(std::size_t index);
   void setGravity(double gravity);
 
-  // Grows until `maxNodes` nodes have been processed (Patrick et al.'s step size) or growth has ended;
-  // returns the nodes processed. Pausing anywhere gives the same tree as one run.
-  std::size_t step(std::size_t maxNodes);
+  // Grows until `maxNodes` nodes have been processed (Patrick et al.'s step size), iteration `untilAge` has
+  // completed, or growth has ended; returns the nodes processed. Pausing anywhere gives the same tree as one run.
+  std::size_t step(std::size_t maxNodes, std::uint32_t untilAge = std::numeric_limits<std::uint32_t>::max());
   void growToEnd();
   bool finished() const { return finished_; }
 

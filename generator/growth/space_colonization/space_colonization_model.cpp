@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "common/text_util.hpp"
+#include "growth/graph/graph_json.hpp"
 #include "growth/random.hpp"
 
 namespace arbor {
@@ -59,19 +60,11 @@ class SpaceColonizationParams final : public ModelParams {
 
   Skeleton grow(const GrowthOptions& options) const override {
     sc::Colonizer colonizer = startColonizer(model_, options.seed);
-    // In slices, so that a tree past the node limit is refused before it has used all the time and memory.
     while (!colonizer.finished()) {
       colonizer.step(20'000);
-      if (colonizer.nodes().size() > options.limits.nodes)
-        throw GenerationError("space colonization '" + model_.name + "': more than " + std::to_string(options.limits.nodes) +
-                              " nodes (the limit; lower the clouds' points or raise segmentLength)");
+      requireNodeLimit(colonizer, model_, options.limits);
     }
-    Skeleton s = graphToSkeleton(colonizationGraph(colonizer, model_), colonizationGraphOptions(model_));
-    s.seed = options.seed;
-    if (s.leaves.size() > options.limits.leaves)
-      throw GenerationError("space colonization '" + model_.name + "': " + std::to_string(s.leaves.size()) + " leaves, more than the limit of " +
-                            std::to_string(options.limits.leaves) + " (lower leaves.depth)");
-    return s;
+    return colonizationSkeleton(colonizer, model_, options.seed, options.limits);
   }
 
   TreeEstimate estimate(int) const override {
@@ -169,6 +162,21 @@ sc::Colonizer startColonizer(const SpaceColonization& m, std::uint64_t seed) {
   return colonizer;
 }
 
+void requireNodeLimit(const sc::Colonizer& colonizer, const SpaceColonization& m, const TreeLimits& limits) {
+  if (colonizer.nodes().size() > limits.nodes)
+    throw GenerationError("space colonization '" + m.name + "': more than " + std::to_string(limits.nodes) +
+                          " nodes (the limit; lower the clouds' points or raise segmentLength)");
+}
+
+Skeleton colonizationSkeleton(const sc::Colonizer& colonizer, const SpaceColonization& m, std::uint64_t seed, const TreeLimits& limits) {
+  Skeleton s = graphToSkeleton(colonizationGraph(colonizer, m), colonizationGraphOptions(m));
+  s.seed = seed;
+  if (s.leaves.size() > limits.leaves)
+    throw GenerationError("space colonization '" + m.name + "': " + std::to_string(s.leaves.size()) + " leaves, more than the limit of " +
+                          std::to_string(limits.leaves) + " (lower leaves.depth)");
+  return s;
+}
+
 GraphOptions colonizationGraphOptions(const SpaceColonization& m) {
   GraphOptions o;
   o.exponent = m.exponent;
@@ -217,6 +225,13 @@ BranchGraph colonizationGraph(const sc::Colonizer& colonizer, const SpaceColoniz
     graph.leaves.push_back(leaf);
   }
   return graph;
+}
+
+std::string writeColonizationGraph(const sc::Colonizer& colonizer, const SpaceColonization& m) {
+  BranchGraph graph = colonizationGraph(colonizer, m);
+  const std::vector<double> radii = pipeRadii(graph, colonizationGraphOptions(m));
+  for (std::size_t i = 0; i < graph.nodes.size(); ++i) graph.nodes[i].radius = radii[i];
+  return writeBranchGraphJson(graph);
 }
 
 TreeModel readSpaceColonizationModel(const std::string& text, const std::string& file, const ModelReadOptions& options) {

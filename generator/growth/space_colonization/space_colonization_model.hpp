@@ -28,4 +28,17 @@ BranchGraph colonizationGraph(const sc::Colonizer& colonizer, const sc::SpaceCol
 
 GraphOptions colonizationGraphOptions(const sc::SpaceColonization& model);
 
+// The colonizer's state as an arbor-graph/1 file (docs/graph-format.md): the enabled nodes, each with its
+// pipe-model radius from the model's radii.tip and radii.exponent (the format carries neither), and the leaves.
+// Node ages are not written: the format has no field for them.
+std::string writeColonizationGraph(const sc::Colonizer& colonizer, const sc::SpaceColonization& model);
+
+// Throws GenerationError (exit 2) once the colonizer holds more nodes than the limit allows: growth checks
+// between slices, so a tree past it is refused before it has used all the time and memory.
+void requireNodeLimit(const sc::Colonizer& colonizer, const sc::SpaceColonization& model, const TreeLimits& limits);
+
+// The colonizer's state as the skeleton the model grows (its enabled nodes, pipe-model radii, leaves), seed
+// recorded; GenerationError past the leaf limit.
+Skeleton colonizationSkeleton(const sc::Colonizer& colonizer, const sc::SpaceColonization& model, std::uint64_t seed, const TreeLimits& limits);
+
 }  // namespace arbor
