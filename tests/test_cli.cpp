@@ -203,6 +203,19 @@ TEST_CASE("grow refuses other models, bad files and outputs with 2 and writes no
   CHECK_FALSE(fs::exists(png));
 }
 
+TEST_CASE("bench grow prints a row per space-colonization model and the floor's sphere", "[cli][sc]") {
+  const Result r = run("bench grow sc-sculpted-crown sc-between-walls --repeat 1 --sphere 2000");
+  INFO(r.output);
+  REQUIRE(r.exitCode == 0);
+  CHECK_THAT(r.output, Catch::Contains("iterations") && Catch::Contains("median ms"));
+  CHECK_THAT(r.output, Catch::Matches("(.|\n)*sc-sculpted-crown +2400 +[0-9]+ +[0-9]+ (.|\n)*"));
+  CHECK_THAT(r.output, Catch::Matches("(.|\n)*sc-between-walls +2500 (.|\n)*"));
+  CHECK_THAT(r.output, Catch::Matches("(.|\n)*sphere-2000 +2000 (.|\n)*"));
+  const Result other = run("bench grow palm --repeat 1 --sphere 0");
+  CHECK(other.exitCode == 2);
+  CHECK_THAT(other.output, Catch::Contains("palm") && Catch::Contains("weber-penn"));
+}
+
 TEST_CASE("unknown presets list the presets on offer", "[cli]") {
   const Result r = run("generate no-such-tree --out " + arbor::test::tempPath("n.json"));
   CHECK(r.exitCode == 2);
@@ -218,7 +231,7 @@ TEST_CASE("usage errors exit with 2", "[cli]") {
 
 TEST_CASE("every subcommand has --help", "[cli]") {
   for (const char* command : {"", "generate", "species", "grow", "bench", "bench generate", "bench mesh", "bench tess", "bench leaves",
-                              "render", "view", "textures", "accuracy"}) {
+                              "bench grow", "render", "view", "textures", "accuracy"}) {
     const Result r = run(std::string(command) + " --help");
     INFO(command);
     CHECK(r.exitCode == 0);

@@ -647,24 +647,3 @@ TEST_CASE("step stops where iteration a ends: the state rewinding to a gives, wh
     }
   }
 }
-
-TEST_CASE("100,000 attraction points colonized to the end", "[.bench][sc]") {
-  ColonizerSettings s;
-  s.segmentLength = 0.1;
-  s.trunkSegments = 20;
-  Colonizer c(s);
-  AttractionCloud cloud;
-  cloud.shape = CloudShape::Sphere;
-  cloud.center = Vec3(0, 0, 6);
-  cloud.size = Vec3(4.0);
-  cloud.points = 100'000;
-  cloud.influence = 0.6;
-  cloud.kill = 0.2;
-  const auto start = std::chrono::steady_clock::now();
-  c.addCloud(cloud);
-  c.growToEnd();
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  WARN("100,000 points: " << c.nodes().size() << " nodes, " << c.livePoints() << " points left, " << c.age() << " iterations, "
-                          << seconds * 1000 << " ms");
-  CHECK(c.nodes().size() >= 20'000);
-}
