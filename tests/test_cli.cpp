@@ -174,6 +174,10 @@ TEST_CASE("grow writes the state after N iterations as a branch graph or a mesh,
   REQUIRE(run("generate sc-around-sphere --seed 2 --quiet --out " + generated).exitCode == 0);
   CHECK(arbor::readFile(grown) == arbor::readFile(generated));
 
+  // A random space-colonization model is a file grow takes.
+  const std::string random = arbor::test::tempPath("random-sc.json");
+  REQUIRE(run("species --random 5 --model space-colonization --out " + random).exitCode == 0);
+  CHECK(run("grow " + random + " --out " + arbor::test::tempPath("random-sc.obj")).exitCode == 0);
 }
 
 TEST_CASE("grow refuses other models, bad files and outputs with 2 and writes nothing", "[cli][sc]") {

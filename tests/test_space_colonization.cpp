@@ -1,5 +1,6 @@
 // Space colonization (issue 16): clouds, the k-d trees of points and nodes, the growth invariants, pause, continued
-// growth, rewind, obstacles, gravitropism, bad files, and every preset through the model to a closed quad mesh.
+// growth, rewind, obstacles, gravitropism, bad files, random models, and every preset through the model to a
+// closed quad mesh.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -628,6 +629,36 @@ TEST_CASE("every space-colonization preset grows and meshes to a closed quad man
     CHECK(r.signedVolume > 0);
   }
   CHECK(presets == 4);
+}
+
+TEST_CASE("random models: valid, the same for the same seed, read back, and grown into closed quad manifolds", "[sc]") {
+  std::size_t branched = 0, withObstacles = 0, shapes[4] = {0, 0, 0, 0};
+  for (std::uint64_t seed = 1; seed <= 50; ++seed) {
+    INFO("seed " << seed);
+    const TreeModel model = randomSpaceColonizationModel(seed);
+    REQUIRE(randomSpaceColonizationModel(seed).toJson() == model.toJson());
+    REQUIRE(randomSpaceColonizationModel(seed + 1).toJson() != model.toJson());
+    const TreeModel back = readSpaceColonizationModel(model.toJson(), "random.json");  // the reader accepts it
+    REQUIRE(back.toJson() == model.toJson());
+    const sc::SpaceColonization& m = *spaceColonizationOf(back);
+    withObstacles += !m.obstacles.empty();
+    for (const AttractionCloud& c : m.clouds) ++shapes[static_cast<int>(c.shape)];
+    const Skeleton s = back.grow({});
+    branched += s.stems.size() > 10;
+    const TreeMesh tree = buildTreeMesh(s);
+    const MeshTopologyReport r = checkTopology(tree.mesh);
+    CHECK(r.boundaryEdges == 0);
+    CHECK(r.nonManifoldEdges == 0);
+    CHECK(r.misorientedEdges == 0);
+    CHECK(r.nonManifoldVertices == 0);
+    CHECK(r.components == 1);
+    CHECK(r.eulerCharacteristic == 2);
+    CHECK(r.signedVolume > 0);
+  }
+  // The clouds reach the trunk, so the trees branch; every shape and obstacles occur.
+  CHECK(branched >= 45);
+  CHECK(withObstacles >= 15);
+  for (const std::size_t n : shapes) CHECK(n >= 10);
 }
 
 TEST_CASE("step stops where iteration a ends: the state rewinding to a gives, whatever the step size", "[sc]") {

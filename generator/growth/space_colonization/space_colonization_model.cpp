@@ -241,6 +241,72 @@ TreeModel readSpaceColonizationModel(const std::string& text, const std::string&
   return TreeModel(std::make_unique<SpaceColonizationParams>(std::move(m)));
 }
 
+TreeModel randomSpaceColonizationModel(std::uint64_t seed) {
+  Rng rng(seed, kStreamTree);
+  const auto between = [&](double lo, double hi) { return lo + (hi - lo) * rng.uniform(); };
+  SpaceColonization m;
+  m.name = "Random space colonization " + std::to_string(seed);
+  m.file = "random:" + std::to_string(seed);
+  m.seed = seed;
+  m.segmentLength = between(0.05, 0.2);
+  m.gravity = rng.uniform() < 0.5 ? 0.0 : between(0.0, 0.1);
+  m.trunkSegments = static_cast<int>(between(5, 30));
+  m.trunkWidth = between(0.1, 0.4);
+  const double top = m.segmentLength * m.trunkSegments;
+  const int clouds = static_cast<int>(between(1, 5));
+  for (int k = 0; k < clouds; ++k) {
+    AttractionCloud c;
+    c.shape = static_cast<CloudShape>(static_cast<int>(between(0, 4)));
+    const double e = between(0.8, 3.0);  // the cloud's half extent, about
+    const Vec3 stretch(between(0.6, 1.2), between(0.6, 1.2), between(0.6, 1.2));
+    double below = 0;  // how far the volume reaches below its centre
+    switch (c.shape) {
+      case CloudShape::Sphere: c.size = Vec3(e), below = e; break;
+      case CloudShape::Ellipsoid: c.size = e * stretch, below = c.size.z; break;
+      case CloudShape::Cone: c.size = Vec3(e, e, between(1.5, 3.0) * e); break;
+      case CloudShape::Box: c.size = 2 * e * stretch, below = 0.5 * c.size.z; break;
+    }
+    // The first cloud holds the trunk's top, the others lean out from it: growth reaches every one.
+    const double off = k == 0 ? 0.0 : between(0.3, 1.0) * e;
+    const double turn = 2 * std::numbers::pi * rng.uniform();
+    c.center = m.trunkBase + Vec3(off * std::cos(turn), off * std::sin(turn), top + below * between(0.2, 0.9) - (c.shape == CloudShape::Cone ? 0.2 * e : 0));
+    c.points = static_cast<std::uint32_t>(between(200, 2000));
+    const double volume = c.shape == CloudShape::Box ? c.size.x * c.size.y * c.size.z
+                          : c.shape == CloudShape::Cone ? std::numbers::pi * e * e * c.size.z / 3
+                                                        : 4.0 / 3.0 * std::numbers::pi * c.size.x * c.size.y * c.size.z;
+    const double spacing = std::cbrt(volume / c.points);
+    c.kill = m.segmentLength * between(1.0, 2.5);
+    c.influence = std::max(2 * c.kill, spacing * between(2.0, 4.0));  // a point reaches the nodes around it before it dies
+    m.clouds.push_back(c);
+  }
+  const int obstacles = static_cast<int>(between(0, 3));
+  for (int k = 0; k < obstacles; ++k) {
+    for (int attempt = 0; attempt < 10; ++attempt) {
+      sc::Obstacle o;
+      o.shape = rng.uniform() < 0.5 ? sc::ObstacleShape::Box : sc::ObstacleShape::Sphere;
+      const double r = between(0.1, 0.8);
+      o.size = o.shape == sc::ObstacleShape::Sphere ? Vec3(r) : Vec3(between(0.1, 2) * r, between(0.1, 2) * r, between(0.1, 2) * r);
+      const double off = between(0.3, 2.5), turn = 2 * std::numbers::pi * rng.uniform();
+      o.center = m.trunkBase + Vec3(off * std::cos(turn), off * std::sin(turn), top + between(-0.5, 2.5));
+      bool onTrunk = false;  // the reader refuses a trunk inside an obstacle; tested as it tests
+      for (int s = 0; s < m.trunkSegments; ++s) {
+        const Vec3 a = m.trunkBase + Vec3(0, 0, m.segmentLength * s);
+        onTrunk |= sc::segmentHitsObstacle(o, a, a + Vec3(0, 0, m.segmentLength));
+      }
+      if (!onTrunk) {
+        m.obstacles.push_back(o);
+        break;
+      }
+    }
+  }
+  m.tipRadius = between(0.003, 0.01);
+  m.exponent = between(2.0, 3.0);
+  m.leafDepth = static_cast<int>(between(-1, 5));
+  m.leafLength = between(0.05, 0.2);
+  m.leafWidth = m.leafLength * between(0.3, 0.6);
+  return TreeModel(std::make_unique<SpaceColonizationParams>(std::move(m)));
+}
+
 const SpaceColonization* spaceColonizationOf(const TreeModel& model) {
   const auto* p = dynamic_cast<const SpaceColonizationParams*>(&model.params());
   return p ? &p->parameters_() : nullptr;
