@@ -551,6 +551,7 @@ TEST_CASE("bad files are refused naming the field", "[sc]") {
         "obstacles[0].radius");
   CHECK(refusedField(with("\"trunk\"", "\"gravity\": -1, \"trunk\"")) == "gravity");
   CHECK(refusedField(with("\"trunk\"", "\"colors\": 1, \"trunk\"")) == "colors");
+  CHECK(readSpaceColonizationModel(good, "models/oak-crown.json").name() == "oak-crown");  // no name: the file's stem
 
   // An OBJ obstacle that is not closed: refused naming the obstacle's file field.
   const std::filesystem::path dir = std::filesystem::temp_directory_path() / "arbor-sc-test";

@@ -16,8 +16,8 @@ inline constexpr const char* kSpaceColonizationModel = "space-colonization";
 // Reads a model file (InputError naming the field, exit 2). Refuses options.naturalAngles: no angle rules here.
 TreeModel readSpaceColonizationModel(const std::string& text, const std::string& file, const ModelReadOptions& options = {});
 
-// A random valid model for stress tests, the same for the same seed: one to four clouds of random shapes, sizes
-// (about 1 to 3 m) and point counts (200 to 2,000) over a trunk they reach, influence and kill radii scaled to
+// A random valid model for stress tests, the same for the same seed: one to four clouds of random shapes, half
+// extents (about 0.8 to 3 m) and point counts (200 to 2,000) over a trunk they reach, influence and kill radii scaled to
 // D and to the points' spacing, up to two box or sphere obstacles clear of the trunk, random radii and leaves.
 TreeModel randomSpaceColonizationModel(std::uint64_t seed);
 
