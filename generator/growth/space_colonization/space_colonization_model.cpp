@@ -257,7 +257,7 @@ TreeModel randomSpaceColonizationModel(std::uint64_t seed) {
   for (int k = 0; k < clouds; ++k) {
     AttractionCloud c;
     c.shape = static_cast<CloudShape>(static_cast<int>(between(0, 4)));
-    const double e = between(0.8, 3.0);  // the cloud's half extent, about
+    const double e = between(0.8, 3.0);  // about the cloud's half extent
     const Vec3 stretch(between(0.6, 1.2), between(0.6, 1.2), between(0.6, 1.2));
     double below = 0;  // how far the volume reaches below its centre
     switch (c.shape) {
