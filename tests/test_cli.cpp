@@ -146,6 +146,80 @@ TEST_CASE("lsystem derives a grammar, draws it as SVG, and refuses bad grammars 
   CHECK_THAT(list.output, Catch::Contains("l-system") && Catch::Matches("(.|\\n)*fig-2-6a +l-system(.|\\n)*"));
 }
 
+TEST_CASE("grow writes the state after N iterations as a branch graph or a mesh, the same for any step size", "[cli][sc]") {
+  const std::string a = arbor::test::tempPath("grow-12-a.json"), b = arbor::test::tempPath("grow-12-b.json");
+  const Result r = run("grow sc-open-broadleaf --steps 12 --step-size 1 --out " + a);
+  INFO(r.output);
+  REQUIRE(r.exitCode == 0);
+  CHECK_THAT(r.output, Catch::Contains("12 iterations (--steps reached)") && Catch::Contains("wrote " + a));
+  REQUIRE(run("grow sc-open-broadleaf --steps 12 --step-size 100000 --out " + b).exitCode == 0);
+  CHECK(arbor::readFile(a) == arbor::readFile(b));
+
+  // To the end: the graph holds every enabled node; after 12 iterations fewer, and it meshes closed.
+  const std::string end = arbor::test::tempPath("grow-end.json");
+  const Result full = run("grow sc-between-walls --out " + end);
+  REQUIRE(full.exitCode == 0);
+  CHECK_THAT(full.output, Catch::Contains("grown to the end"));
+  const auto graph = nlohmann::json::parse(arbor::readFile(end));
+  CHECK(graph["format"] == "arbor-graph/1");
+  CHECK_THAT(full.output, Catch::Contains(", " + std::to_string(graph["nodes"].size()) + " enabled,"));
+  CHECK(nlohmann::json::parse(arbor::readFile(a))["nodes"].size() < graph["nodes"].size());
+  const Result meshed = run("mesh " + a + " --out " + arbor::test::tempPath("grow-12.obj"));
+  CHECK(meshed.exitCode == 0);
+  CHECK_THAT(meshed.output, Catch::Contains("closed 2-manifold, 1 piece(s)"));
+
+  // The mesh of a tree grown to the end is the one `generate` writes for the model.
+  const std::string grown = arbor::test::tempPath("grow-end.obj"), generated = arbor::test::tempPath("generate-end.obj");
+  REQUIRE(run("grow sc-around-sphere --seed 2 --out " + grown).exitCode == 0);
+  REQUIRE(run("generate sc-around-sphere --seed 2 --quiet --out " + generated).exitCode == 0);
+  CHECK(arbor::readFile(grown) == arbor::readFile(generated));
+
+  // A random space-colonization model is a file grow takes.
+  const std::string random = arbor::test::tempPath("random-sc.json");
+  REQUIRE(run("species --random 5 --model space-colonization --out " + random).exitCode == 0);
+  CHECK(run("grow " + random + " --out " + arbor::test::tempPath("random-sc.obj")).exitCode == 0);
+}
+
+TEST_CASE("grow refuses other models, bad files and outputs with 2 and writes nothing", "[cli][sc]") {
+  const std::string out = writeTemp("grow-keep.json", "previous content");
+  const std::string badCloud = writeTemp("grow-bad-cloud.json", R"({"model": "space-colonization", "segmentLength": 0.1,
+    "trunk": {"segments": 3, "width": 0.1},
+    "clouds": [{"shape": "sphere", "center": [0, 0, 1], "radius": 1, "points": 10, "influence": 0.2, "kill": 0.3}]})");
+  const std::pair<std::string, std::vector<std::string>> cases[] = {
+      {"grow palm --out " + out, {"palm", "weber-penn", "not space-colonization"}},
+      {"grow fig-1-25 --out " + out, {"fig-1-25", "l-system"}},
+      {"grow " + badCloud + " --out " + out, {"grow-bad-cloud.json", "clouds[0].kill"}},
+      {"grow no-such-model --out " + out, {"no-such-model", "sc-open-broadleaf"}},
+      {"grow sc-open-broadleaf --steps -3 --out " + out, {"--steps"}},
+      {"grow sc-open-broadleaf --step-size 0 --out " + out, {"--step-size"}},
+  };
+  for (const auto& [arguments, needles] : cases) {
+    const Result r = run(arguments);
+    INFO(arguments << "\n" << r.output);
+    CHECK(r.exitCode == 2);
+    for (const std::string& n : needles) CHECK_THAT(r.output, Catch::Contains(n));
+    CHECK(arbor::readFile(out) == "previous content");
+  }
+  const std::string png = arbor::test::tempPath("grow.png");
+  const Result wrongType = run("grow sc-open-broadleaf --out " + png);
+  CHECK(wrongType.exitCode == 2);
+  CHECK_THAT(wrongType.output, Catch::Contains("--out") && Catch::Contains(".obj"));
+  CHECK_FALSE(fs::exists(png));
+}
+
+TEST_CASE("bench grow prints a row per space-colonization model and the floor's sphere", "[cli][sc]") {
+  const Result r = run("bench grow sc-sculpted-crown sc-between-walls --repeat 1 --sphere 2000");
+  INFO(r.output);
+  REQUIRE(r.exitCode == 0);
+  CHECK_THAT(r.output, Catch::Contains("iterations") && Catch::Contains("median ms"));
+  CHECK_THAT(r.output, Catch::Matches("(.|\n)*sc-sculpted-crown +2400 +[0-9]+ +[0-9]+ (.|\n)*"));
+  CHECK_THAT(r.output, Catch::Matches("(.|\n)*sc-between-walls +2500 (.|\n)*"));
+  CHECK_THAT(r.output, Catch::Matches("(.|\n)*sphere-2000 +2000 (.|\n)*"));
+  const Result other = run("bench grow palm --repeat 1 --sphere 0");
+  CHECK(other.exitCode == 2);
+  CHECK_THAT(other.output, Catch::Contains("palm") && Catch::Contains("weber-penn"));
+}
+
 TEST_CASE("unknown presets list the presets on offer", "[cli]") {
   const Result r = run("generate no-such-tree --out " + arbor::test::tempPath("n.json"));
   CHECK(r.exitCode == 2);
@@ -160,8 +234,8 @@ TEST_CASE("usage errors exit with 2", "[cli]") {
 }
 
 TEST_CASE("every subcommand has --help", "[cli]") {
-  for (const char* command : {"", "generate", "species", "bench", "bench generate", "bench mesh", "bench tess", "bench leaves", "render", "view",
-                              "textures", "accuracy"}) {
+  for (const char* command : {"", "generate", "species", "grow", "bench", "bench generate", "bench mesh", "bench tess", "bench leaves",
+                              "bench grow", "render", "view", "textures", "accuracy"}) {
     const Result r = run(std::string(command) + " --help");
     INFO(command);
     CHECK(r.exitCode == 0);

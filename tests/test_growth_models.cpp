@@ -123,3 +123,16 @@ TEST_CASE("the model list holds Weber-Penn with its format documentation and ran
   const TreeModel random = wp.random(7);
   CHECK(readModelFile(random.toJson(), "r.json").toJson() == random.toJson());
 }
+
+TEST_CASE("the space-colonization row draws random models that read back as that model", "[growth-models]") {
+  const GrowthModelInfo* row = nullptr;
+  for (const GrowthModelInfo& m : growthModels())
+    if (std::string(m.name) == "space-colonization") row = &m;
+  REQUIRE(row != nullptr);
+  REQUIRE(row->random != nullptr);
+  for (std::uint64_t seed = 1; seed <= 5; ++seed) {
+    const TreeModel random = row->random(seed);
+    CHECK(std::string(random.model()) == "space-colonization");
+    CHECK(readModelFile(random.toJson(), "r.json").toJson() == random.toJson());
+  }
+}

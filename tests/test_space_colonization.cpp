@@ -1,7 +1,9 @@
-// Space colonization (issue 16): clouds, the k-d tree, the growth invariants, pause, continued growth, rewind,
-// obstacles, gravitropism, bad files, and every preset through the model to a closed quad mesh.
+// Space colonization (issue 16): clouds, the k-d trees of points and nodes, the growth invariants, pause, continued
+// growth, rewind, obstacles, gravitropism, bad files, random models, and every preset through the model to a
+// closed quad mesh.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cstring>
 #include <filesystem>
@@ -355,7 +357,7 @@ TEST_CASE("the modeller's edits: a moved, resized or removed cloud keeps every n
   requireSegmentsOfLengthD(c);
 }
 
-TEST_CASE("an obstacle moved onto branches disables them and their descendants; moved away, they come back", "[sc]") {
+TEST_CASE("an obstacle moved onto branches disables them and their descendants, and moved away brings them back", "[sc]") {
   Colonizer c = smallTree();
   c.growToEnd();
   const std::vector<Node> grown = c.nodes();
@@ -443,6 +445,126 @@ TEST_CASE("obstacles: no enabled segment enters one, disabled sets closed under 
   REQUIRE(disabled(c) == 0);
 }
 
+namespace {
+
+// A random tree: one to three clouds of random shape above a trunk, grown a random number of nodes.
+Colonizer randomTree(Rng& rng) {
+  ColonizerSettings s;
+  s.segmentLength = 0.04 + 0.06 * rng.uniform();
+  s.gravity = rng.uniform() < 0.5 ? 0.0 : 0.5 * rng.uniform();
+  s.trunkSegments = 5 + static_cast<int>(10 * rng.uniform());
+  s.seed = rng.next();
+  Colonizer c(s);
+  const double top = s.segmentLength * s.trunkSegments;
+  const int clouds = 1 + static_cast<int>(3 * rng.uniform());
+  for (int k = 0; k < clouds; ++k) {
+    AttractionCloud cloud;
+    cloud.shape = static_cast<CloudShape>(static_cast<int>(4 * rng.uniform()));
+    cloud.size = Vec3(0.3 + 0.5 * rng.uniform(), 0.3 + 0.5 * rng.uniform(), 0.3 + 0.5 * rng.uniform());
+    if (cloud.shape == CloudShape::Sphere) cloud.size = Vec3(cloud.size.x);
+    if (cloud.shape == CloudShape::Cone) cloud.size.y = cloud.size.x;
+    cloud.center = Vec3(0.3 * rng.signedUnit(), 0.3 * rng.signedUnit(), top + (cloud.shape == CloudShape::Cone ? -0.1 : 0.3 * rng.uniform()));
+    cloud.points = 200 + static_cast<std::uint32_t>(600 * rng.uniform());
+    cloud.influence = 0.15 + 0.2 * rng.uniform();
+    cloud.kill = (0.2 + 0.5 * rng.uniform()) * cloud.influence;
+    c.addCloud(cloud);
+  }
+  c.step(static_cast<std::size_t>(200 + 3000 * rng.uniform()));
+  return c;
+}
+
+// A closed OBJ mesh: an octahedron with a random radius per vertex (not convex), written as an artist's file.
+std::shared_ptr<const TriangleMesh> randomOctahedron(Rng& rng, const Vec3& center, double size) {
+  std::ostringstream obj;
+  for (int axis = 0; axis < 3; ++axis) {
+    for (const double sign : {1.0, -1.0}) {
+      Vec3 v = center;
+      v[axis] += sign * size * (0.3 + 0.7 * rng.uniform());
+      obj << "v " << v.x << ' ' << v.y << ' ' << v.z << '\n';
+    }
+  }
+  // Vertices 1..6 are +x, -x, +y, -y, +z, -z: one face per octant, each edge shared by two.
+  obj << "f 1 3 5\nf 3 2 5\nf 2 4 5\nf 4 1 5\nf 3 1 6\nf 2 3 6\nf 4 2 6\nf 1 4 6\n";
+  return std::make_shared<const TriangleMesh>(readObjMesh(obj.str(), "octahedron.obj", "obstacles[0].file"));
+}
+
+Obstacle randomObstacle(Rng& rng, const Colonizer& c) {
+  // Centred near a random node, so that it touches some of the tree.
+  const Vec3 at = c.nodes()[static_cast<std::size_t>(rng.uniform() * static_cast<double>(c.nodes().size()))].position +
+                  0.1 * Vec3(rng.signedUnit(), rng.signedUnit(), rng.signedUnit());
+  const double size = 0.02 + 0.4 * rng.uniform();
+  Obstacle o;
+  o.shape = static_cast<ObstacleShape>(static_cast<int>(3 * rng.uniform()));
+  o.center = at;
+  if (o.shape == ObstacleShape::Box) o.size = size * Vec3(0.2 + rng.uniform(), 0.2 + rng.uniform(), 0.2 + rng.uniform());
+  if (o.shape == ObstacleShape::Sphere) o.size = Vec3(size);
+  if (o.shape == ObstacleShape::Mesh) o.mesh = randomOctahedron(rng, at, size);
+  return o;
+}
+
+// Brute force: every node's segment (the root's: its point) against the obstacle.
+std::vector<std::uint32_t> touchedByBruteForce(const Obstacle& o, const std::vector<Node>& nodes) {
+  std::vector<std::uint32_t> out;
+  for (std::size_t i = 0; i < nodes.size(); ++i) {
+    const Vec3 from = nodes[i].parent < 0 ? nodes[i].position : nodes[static_cast<std::size_t>(nodes[i].parent)].position;
+    if (segmentHitsObstacle(o, from, nodes[i].position)) out.push_back(static_cast<std::uint32_t>(i));
+  }
+  return out;
+}
+
+// Brute force: the nodes touched by any obstacle and all their descendants.
+std::vector<bool> disabledByBruteForce(const Colonizer& c) {
+  const auto& nodes = c.nodes();
+  std::vector<bool> touched(nodes.size(), false), disabled(nodes.size(), false);
+  for (const Obstacle& o : c.obstacles())
+    for (const std::uint32_t i : touchedByBruteForce(o, nodes)) touched[i] = true;
+  for (std::size_t i = 0; i < nodes.size(); ++i)
+    disabled[i] = touched[i] || (nodes[i].parent >= 0 && disabled[static_cast<std::size_t>(nodes[i].parent)]);
+  return disabled;
+}
+
+std::vector<bool> disabledSet(const Colonizer& c) {
+  std::vector<bool> out;
+  for (const Node& n : c.nodes()) out.push_back(!n.enabled);
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("the k-d tree of nodes answers the obstacle tests as brute force does, on random trees and obstacles", "[sc]") {
+  Rng rng(16, 0);
+  std::size_t touched = 0, disabledSeen = 0, shapes[3] = {0, 0, 0};
+  for (int tree = 0; tree < 40; ++tree) {
+    INFO("tree " << tree);
+    Colonizer c = randomTree(rng);
+    std::vector<Vec3> positions;
+    for (const Node& n : c.nodes()) positions.push_back(n.position);
+    const PointIndex nodeIndex(positions);
+    for (int k = 0; k < 25; ++k) {
+      const Obstacle o = randomObstacle(rng, c);
+      const std::vector<std::uint32_t> indexed = nodesTouching(o, c.nodes(), nodeIndex, c.settings().segmentLength);
+      REQUIRE(indexed == touchedByBruteForce(o, c.nodes()));
+      touched += indexed.size();
+      shapes[static_cast<int>(o.shape)] += !indexed.empty();
+    }
+    // Through the colonizer: the disabled set after each obstacle is added, and after one is removed again.
+    for (int k = 0; k < 3; ++k) {
+      c.addObstacle(randomObstacle(rng, c));
+      REQUIRE(disabledSet(c) == disabledByBruteForce(c));
+    }
+    const std::vector<bool> disabled = disabledSet(c);
+    disabledSeen += static_cast<std::size_t>(std::count(disabled.begin(), disabled.end(), true));
+    c.removeObstacle(static_cast<std::size_t>(3 * rng.uniform()));
+    REQUIRE(disabledSet(c) == disabledByBruteForce(c));
+    c.step(500);  // growth on past the obstacles keeps the two equal
+    REQUIRE(disabledSet(c) == disabledByBruteForce(c));
+  }
+  // The obstacles did touch the trees, of every shape, so the equality above compared something.
+  CHECK(touched > 1000);
+  CHECK(disabledSeen > 100);
+  for (const std::size_t hits : shapes) CHECK(hits > 20);
+}
+
 TEST_CASE("a closed OBJ mesh is an obstacle and an open one is refused", "[sc]") {
   const std::string cube =
       "v -1 -1 -1\nv 1 -1 -1\nv 1 1 -1\nv -1 1 -1\nv -1 -1 1\nv 1 -1 1\nv 1 1 1\nv -1 1 1\n"
@@ -496,6 +618,7 @@ TEST_CASE("bad files are refused naming the field", "[sc]") {
         "obstacles[0].radius");
   CHECK(refusedField(with("\"trunk\"", "\"gravity\": -1, \"trunk\"")) == "gravity");
   CHECK(refusedField(with("\"trunk\"", "\"colors\": 1, \"trunk\"")) == "colors");
+  CHECK(readSpaceColonizationModel(good, "models/oak-crown.json").name() == "oak-crown");  // no name: the file's stem
 
   // An OBJ obstacle that is not closed: refused naming the obstacle's file field.
   const std::filesystem::path dir = std::filesystem::temp_directory_path() / "arbor-sc-test";
@@ -576,23 +699,50 @@ TEST_CASE("every space-colonization preset grows and meshes to a closed quad man
   CHECK(presets == 4);
 }
 
-TEST_CASE("100,000 attraction points colonized to the end", "[.bench][sc]") {
-  ColonizerSettings s;
-  s.segmentLength = 0.1;
-  s.trunkSegments = 20;
-  Colonizer c(s);
-  AttractionCloud cloud;
-  cloud.shape = CloudShape::Sphere;
-  cloud.center = Vec3(0, 0, 6);
-  cloud.size = Vec3(4.0);
-  cloud.points = 100'000;
-  cloud.influence = 0.6;
-  cloud.kill = 0.2;
-  const auto start = std::chrono::steady_clock::now();
-  c.addCloud(cloud);
-  c.growToEnd();
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  WARN("100,000 points: " << c.nodes().size() << " nodes, " << c.livePoints() << " points left, " << c.age() << " iterations, "
-                          << seconds * 1000 << " ms");
-  CHECK(c.nodes().size() >= 20'000);
+TEST_CASE("random models: valid, the same for the same seed, read back, and grown into closed quad manifolds", "[sc]") {
+  std::size_t branched = 0, withObstacles = 0, shapes[4] = {0, 0, 0, 0};
+  for (std::uint64_t seed = 1; seed <= 50; ++seed) {
+    INFO("seed " << seed);
+    const TreeModel model = randomSpaceColonizationModel(seed);
+    REQUIRE(randomSpaceColonizationModel(seed).toJson() == model.toJson());
+    REQUIRE(randomSpaceColonizationModel(seed + 1).toJson() != model.toJson());
+    const TreeModel back = readSpaceColonizationModel(model.toJson(), "random.json");  // the reader accepts it
+    REQUIRE(back.toJson() == model.toJson());
+    const sc::SpaceColonization& m = *spaceColonizationOf(back);
+    withObstacles += !m.obstacles.empty();
+    for (const AttractionCloud& c : m.clouds) ++shapes[static_cast<int>(c.shape)];
+    const Skeleton s = back.grow({});
+    branched += s.stems.size() > 10;
+    const TreeMesh tree = buildTreeMesh(s);
+    const MeshTopologyReport r = checkTopology(tree.mesh);
+    CHECK(r.boundaryEdges == 0);
+    CHECK(r.nonManifoldEdges == 0);
+    CHECK(r.misorientedEdges == 0);
+    CHECK(r.nonManifoldVertices == 0);
+    CHECK(r.components == 1);
+    CHECK(r.eulerCharacteristic == 2);
+    CHECK(r.signedVolume > 0);
+  }
+  // The clouds reach the trunk, so the trees branch; every shape and obstacles occur.
+  CHECK(branched >= 45);
+  CHECK(withObstacles >= 15);
+  for (const std::size_t n : shapes) CHECK(n >= 10);
+}
+
+TEST_CASE("step stops where iteration a ends: the state rewinding to a gives, whatever the step size", "[sc]") {
+  Colonizer full = smallTree(0.3);
+  full.growToEnd();
+  for (const std::uint32_t a : {1u, 7u, full.age() / 2}) {
+    Colonizer rewound = full;
+    rewound.rewind(a);
+    for (const std::size_t size : {std::size_t{1}, std::size_t{13}, std::numeric_limits<std::size_t>::max()}) {
+      INFO("age " << a << ", step size " << size);
+      Colonizer c = smallTree(0.3);
+      while (!c.finished() && c.age() < a) c.step(size, a);
+      REQUIRE(c.age() == a);
+      REQUIRE(c.step(size, a) == 0);
+      REQUIRE(sameNodes(c.nodes(), rewound.nodes()));
+      REQUIRE(liveSet(c) == liveSet(rewound));
+    }
+  }
 }

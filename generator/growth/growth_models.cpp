@@ -30,7 +30,7 @@ const std::array<GrowthModelInfo, 3> kModels{{
     {"l-system", "Lindenmayer systems (ABOP ch. 1-2): bracketed, stochastic, context-sensitive, parametric, 3D turtle (.lsys grammars)",
      "docs/lsystem-format.md", ".lsys", readLsystem, nullptr, nullptr},
     {"space-colonization", "Space colonization (Runions et al. 2007) with clouds, obstacles and gravitropism (Patrick, Rege & Bailey)",
-     "docs/space-colonization-format.md", "", readSpaceColonization, nullptr, nullptr},
+     "docs/space-colonization-format.md", "", readSpaceColonization, nullptr, randomSpaceColonizationModel},
 }};
 
 constexpr const char* kModelKey = "model";

@@ -137,6 +137,7 @@ void addBenchCommand(CLI::App& app, Action& action) {
   addBenchTessCommand(*bench, action);
   addBenchLeavesCommand(*bench, action);
   addBenchLsystemCommand(*bench, action);
+  addBenchGrowCommand(*bench, action);
 }
 
 }  // namespace arbor::cli

@@ -45,7 +45,12 @@ int runSpecies(const SpeciesOptions& o) {
     std::fputs(model.formatMarkdown().c_str(), stdout);
     return 0;
   }
-  if (!o.random.empty() && !model.random) throw InputError(o.model, "--model", "has no random parameters; --random is for weber-penn");
+  if (!o.random.empty() && !model.random) {
+    std::string withRandom;
+    for (const GrowthModelInfo& m : growthModels())
+      if (m.random) withRandom += std::string(withRandom.empty() ? "" : ", ") + m.name;
+    throw InputError(o.model, "--model", "has no random parameters; --random is for " + withRandom);
+  }
   if (o.random.empty() && (o.list || o.species.empty())) {
     std::printf("growth models:\n");
     for (const GrowthModelInfo& m : growthModels()) std::printf("  %-12s %s (%s)\n", m.name, m.summary, m.format);
@@ -80,7 +85,9 @@ void addSpeciesCommand(CLI::App& app, Action& action) {
   addAnglesOption(cmd, o->angles);
   cmd->add_option("--out", o->out, "Write the species as Arbor JSON to this file instead of printing it");
   cmd->add_flag("--list", o->list, "List the growth models and the presets (with the model of each)");
-  cmd->add_option("--random", o->random, "Write a random species: every field drawn evenly from its documented range (stress tests)")
+  cmd->add_option("--random", o->random,
+                  "Write random parameters of --model (stress tests): weber-penn draws every field evenly from its documented "
+                  "range, space-colonization draws clouds, obstacles, radii and leaves")
       ->check(Seed());
   cmd->add_flag("--format-doc", o->formatDoc, "Print the model file format documentation (Markdown) of --model");
   cmd->add_option("--model", o->model, "Growth model for --random and --format-doc (default: weber-penn; see --list)");

@@ -19,6 +19,8 @@ void addBenchTessCommand(CLI::App& bench, Action& action);  // under `bench`
 void addBenchLeavesCommand(CLI::App& bench, Action& action);  // under `bench`
 void addBenchLsystemCommand(CLI::App& bench, Action& action);  // under `bench`
 void addLsystemCommand(CLI::App& app, Action& action);
+void addGrowCommand(CLI::App& app, Action& action);
+void addBenchGrowCommand(CLI::App& bench, Action& action);  // under `bench`
 void addRenderCommand(CLI::App& app, Action& action);
 void addViewCommand(CLI::App& app, Action& action);
 void addTexturesCommand(CLI::App& app, Action& action);

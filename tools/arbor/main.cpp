@@ -42,6 +42,7 @@ int main(int argc, char** argv) {
   addGenerateCommand(app, action);
   addMeshCommand(app, action);
   addLsystemCommand(app, action);
+  addGrowCommand(app, action);
   addSpeciesCommand(app, action);
   addBenchCommand(app, action);
   addRenderCommand(app, action);

@@ -19,7 +19,28 @@ constexpr double kZeroSum = 1e-9;
 // A new node this near (in segment lengths) to an existing child of its node would lie on top of it.
 constexpr double kSameChild = 1e-6;
 
+// The segment arriving at node i: from its parent, or the root's point.
+bool segmentTouches(const Obstacle& o, const std::vector<Node>& nodes, std::size_t i) {
+  const Node& n = nodes[i];
+  const Vec3 from = n.parent < 0 ? n.position : nodes[static_cast<std::size_t>(n.parent)].position;
+  return segmentHitsObstacle(o, from, n.position);
+}
+
 }  // namespace
+
+std::vector<std::uint32_t> nodesTouching(const Obstacle& o, const std::vector<Node>& nodes, const PointIndex& nodeIndex, double reach) {
+  std::vector<std::uint32_t> out;
+  const Ball ball = boundingBall(o);
+  if (ball.radius < 0) return out;
+  // A touching segment has a point in the ball and its node within `reach` of that point. The margin, far above
+  // rounding at the coordinates' magnitude, covers segments a few ulps longer than D and exact tests that accept
+  // a point a few ulps outside.
+  const double far = ball.radius + reach;
+  nodeIndex.within(ball.center, far + 1e-6 * (far + glm::length(ball.center)), out);
+  std::sort(out.begin(), out.end());
+  std::erase_if(out, [&](std::uint32_t i) { return !segmentTouches(o, nodes, i); });
+  return out;
+}
 
 Vec3 growthDirection(const Vec3& sum, const Vec3& node, const Vec3& trunkBase, double gravity) {
   const Vec3 n = sum / glm::length(sum);
@@ -112,14 +133,21 @@ void Colonizer::setGravity(double gravity) {
 }
 
 void Colonizer::settle() {
-  // Disabled: inside an obstacle, or below a node that is. Parents come before children, so one pass closes
-  // the set under descendants.
+  // Touched: a node whose segment touches an obstacle, found through a k-d tree of the nodes.
+  std::vector<std::uint8_t> touched(nodes_.size(), 0);
+  if (!obstacles_.empty()) {
+    std::vector<Vec3> positions(nodes_.size());
+    for (std::size_t i = 0; i < nodes_.size(); ++i) positions[i] = nodes_[i].position;
+    const PointIndex nodeIndex(std::move(positions));
+    for (const Obstacle& o : obstacles_)
+      for (const std::uint32_t i : nodesTouching(o, nodes_, nodeIndex, settings_.segmentLength)) touched[i] = 1;
+  }
+  // Disabled: touched, or below a node that is. Parents come before children, so one pass closes the set under
+  // descendants.
   for (std::size_t i = 0; i < nodes_.size(); ++i) {
     Node& n = nodes_[i];
     const bool parentEnabled = n.parent < 0 || nodes_[static_cast<std::size_t>(n.parent)].enabled;
-    const Vec3 from = n.parent < 0 ? n.position : nodes_[static_cast<std::size_t>(n.parent)].position;
-    n.enabled = parentEnabled && std::none_of(obstacles_.begin(), obstacles_.end(),
-                                              [&](const Obstacle& o) { return segmentHitsObstacle(o, from, n.position); });
+    n.enabled = parentEnabled && !touched[i];
   }
   reindex();
   closest_.assign(points_.size(), -1);
@@ -205,9 +233,9 @@ void Colonizer::grow(const Grower& g) {
   noteNode(node, age_ + 1);
 }
 
-std::size_t Colonizer::step(std::size_t maxNodes) {
+std::size_t Colonizer::step(std::size_t maxNodes, std::uint32_t untilAge) {
   std::size_t processed = 0;
-  while (processed < maxNodes && !finished_) {
+  while (processed < maxNodes && !finished_ && age_ < untilAge) {
     if (cursor_ == pending_.size()) {
       beginIteration();
       if (finished_) break;

@@ -39,6 +39,12 @@ struct AttractionPoint {
 // the normalised sum untouched (the base algorithm, bit for bit).
 Vec3 growthDirection(const Vec3& sum, const Vec3& node, const Vec3& trunkBase, double gravity);
 
+// The nodes whose segment (from its parent; the root's is the node itself) touches the obstacle, ascending: the
+// obstacle tests answered by a k-d tree of nodes. `nodeIndex` indexes the nodes' positions by node number;
+// `reach` is the longest segment. A node farther than that from the obstacle's bounding ball cannot touch it,
+// so only the nodes the index finds within that distance get the exact test: the answer is brute force's.
+std::vector<std::uint32_t> nodesTouching(const Obstacle& obstacle, const std::vector<Node>& nodes, const PointIndex& nodeIndex, double reach);
+
 class Colonizer {
  public:
   explicit Colonizer(const ColonizerSettings& settings);
@@ -55,9 +61,9 @@ class Colonizer {
   void removeObstacle(std::size_t index);
   void setGravity(double gravity);
 
-  // Grows until `maxNodes` nodes have been processed (Patrick et al.'s step size) or growth has ended;
-  // returns the nodes processed. Pausing anywhere gives the same tree as one run.
-  std::size_t step(std::size_t maxNodes);
+  // Grows until `maxNodes` nodes have been processed (Patrick et al.'s step size), iteration `untilAge` has
+  // completed, or growth has ended; returns the nodes processed. Pausing anywhere gives the same tree as one run.
+  std::size_t step(std::size_t maxNodes, std::uint32_t untilAge = std::numeric_limits<std::uint32_t>::max());
   void growToEnd();
   bool finished() const { return finished_; }
 

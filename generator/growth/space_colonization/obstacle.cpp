@@ -14,6 +14,17 @@ const char* obstacleShapeName(ObstacleShape shape) {
   return "?";
 }
 
+Ball boundingBall(const Obstacle& o) {
+  switch (o.shape) {
+    case ObstacleShape::Box: return {o.center, 0.5 * glm::length(o.size)};
+    case ObstacleShape::Sphere: return {o.center, o.size.x};
+    case ObstacleShape::Mesh:
+      if (!o.mesh) return {};
+      return {0.5 * (o.mesh->low + o.mesh->high), 0.5 * glm::length(o.mesh->high - o.mesh->low)};
+  }
+  return {};
+}
+
 bool insideObstacle(const Obstacle& o, const Vec3& p) {
   switch (o.shape) {
     case ObstacleShape::Box: {

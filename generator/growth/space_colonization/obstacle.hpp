@@ -20,6 +20,13 @@ struct Obstacle {
 
 const char* obstacleShapeName(ObstacleShape shape);
 
+// A ball holding the whole obstacle: what lies outside it cannot touch the obstacle. Radius < 0: nothing to touch.
+struct Ball {
+  Vec3 center{0.0};
+  double radius = -1;
+};
+Ball boundingBall(const Obstacle& obstacle);
+
 bool insideObstacle(const Obstacle& obstacle, const Vec3& p);
 
 // Whether the segment a-b enters the obstacle (touching its boundary counts).

@@ -11,7 +11,7 @@
 namespace arbor::sc {
 
 struct SpaceColonization {
-  std::string name = "space colonization";
+  std::string name;            // the model file's stem when the file names none
   std::string file;            // where it was read from: OBJ obstacles are found beside it
   std::uint64_t seed = 1;
   double segmentLength = 0.1;  // D

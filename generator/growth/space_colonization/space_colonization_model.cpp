@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "common/text_util.hpp"
+#include "growth/graph/graph_json.hpp"
 #include "growth/random.hpp"
 
 namespace arbor {
@@ -59,19 +60,11 @@ class SpaceColonizationParams final : public ModelParams {
 
   Skeleton grow(const GrowthOptions& options) const override {
     sc::Colonizer colonizer = startColonizer(model_, options.seed);
-    // In slices, so that a tree past the node limit is refused before it has used all the time and memory.
     while (!colonizer.finished()) {
       colonizer.step(20'000);
-      if (colonizer.nodes().size() > options.limits.nodes)
-        throw GenerationError("space colonization '" + model_.name + "': more than " + std::to_string(options.limits.nodes) +
-                              " nodes (the limit; lower the clouds' points or raise segmentLength)");
+      requireNodeLimit(colonizer, model_, options.limits);
     }
-    Skeleton s = graphToSkeleton(colonizationGraph(colonizer, model_), colonizationGraphOptions(model_));
-    s.seed = options.seed;
-    if (s.leaves.size() > options.limits.leaves)
-      throw GenerationError("space colonization '" + model_.name + "': " + std::to_string(s.leaves.size()) + " leaves, more than the limit of " +
-                            std::to_string(options.limits.leaves) + " (lower leaves.depth)");
-    return s;
+    return colonizationSkeleton(colonizer, model_, options.seed, options.limits);
   }
 
   TreeEstimate estimate(int) const override {
@@ -169,6 +162,21 @@ sc::Colonizer startColonizer(const SpaceColonization& m, std::uint64_t seed) {
   return colonizer;
 }
 
+void requireNodeLimit(const sc::Colonizer& colonizer, const SpaceColonization& m, const TreeLimits& limits) {
+  if (colonizer.nodes().size() > limits.nodes)
+    throw GenerationError("space colonization '" + m.name + "': more than " + std::to_string(limits.nodes) +
+                          " nodes (the limit; lower the clouds' points or raise segmentLength)");
+}
+
+Skeleton colonizationSkeleton(const sc::Colonizer& colonizer, const SpaceColonization& m, std::uint64_t seed, const TreeLimits& limits) {
+  Skeleton s = graphToSkeleton(colonizationGraph(colonizer, m), colonizationGraphOptions(m));
+  s.seed = seed;
+  if (s.leaves.size() > limits.leaves)
+    throw GenerationError("space colonization '" + m.name + "': " + std::to_string(s.leaves.size()) + " leaves, more than the limit of " +
+                          std::to_string(limits.leaves) + " (lower leaves.depth)");
+  return s;
+}
+
 GraphOptions colonizationGraphOptions(const SpaceColonization& m) {
   GraphOptions o;
   o.exponent = m.exponent;
@@ -219,10 +227,83 @@ BranchGraph colonizationGraph(const sc::Colonizer& colonizer, const SpaceColoniz
   return graph;
 }
 
+std::string writeColonizationGraph(const sc::Colonizer& colonizer, const SpaceColonization& m) {
+  BranchGraph graph = colonizationGraph(colonizer, m);
+  const std::vector<double> radii = pipeRadii(graph, colonizationGraphOptions(m));
+  for (std::size_t i = 0; i < graph.nodes.size(); ++i) graph.nodes[i].radius = radii[i];
+  return writeBranchGraphJson(graph);
+}
+
 TreeModel readSpaceColonizationModel(const std::string& text, const std::string& file, const ModelReadOptions& options) {
   if (options.naturalAngles) throw InputError(file, "--natural-angles", "space colonization has no angle rules: the attraction points give the directions");
   SpaceColonization m = sc::readSpaceColonization(text, file);
   if (m.name.empty()) m.name = std::filesystem::path(file).stem().string();
+  return TreeModel(std::make_unique<SpaceColonizationParams>(std::move(m)));
+}
+
+TreeModel randomSpaceColonizationModel(std::uint64_t seed) {
+  Rng rng(seed, kStreamTree);
+  const auto between = [&](double lo, double hi) { return lo + (hi - lo) * rng.uniform(); };
+  SpaceColonization m;
+  m.name = "Random space colonization " + std::to_string(seed);
+  m.file = "random:" + std::to_string(seed);
+  m.seed = seed;
+  m.segmentLength = between(0.05, 0.2);
+  m.gravity = rng.uniform() < 0.5 ? 0.0 : between(0.0, 0.1);
+  m.trunkSegments = static_cast<int>(between(5, 30));
+  m.trunkWidth = between(0.1, 0.4);
+  const double top = m.segmentLength * m.trunkSegments;
+  const int clouds = static_cast<int>(between(1, 5));
+  for (int k = 0; k < clouds; ++k) {
+    AttractionCloud c;
+    c.shape = static_cast<CloudShape>(static_cast<int>(between(0, 4)));
+    const double e = between(0.8, 3.0);  // about the cloud's half extent
+    const Vec3 stretch(between(0.6, 1.2), between(0.6, 1.2), between(0.6, 1.2));
+    double below = 0;  // how far the volume reaches below its centre
+    switch (c.shape) {
+      case CloudShape::Sphere: c.size = Vec3(e), below = e; break;
+      case CloudShape::Ellipsoid: c.size = e * stretch, below = c.size.z; break;
+      case CloudShape::Cone: c.size = Vec3(e, e, between(1.5, 3.0) * e); break;
+      case CloudShape::Box: c.size = 2 * e * stretch, below = 0.5 * c.size.z; break;
+    }
+    // The first cloud holds the trunk's top, the others lean out from it: growth reaches every one.
+    const double off = k == 0 ? 0.0 : between(0.3, 1.0) * e;
+    const double turn = 2 * std::numbers::pi * rng.uniform();
+    c.center = m.trunkBase + Vec3(off * std::cos(turn), off * std::sin(turn), top + below * between(0.2, 0.9) - (c.shape == CloudShape::Cone ? 0.2 * e : 0));
+    c.points = static_cast<std::uint32_t>(between(200, 2000));
+    const double volume = c.shape == CloudShape::Box ? c.size.x * c.size.y * c.size.z
+                          : c.shape == CloudShape::Cone ? std::numbers::pi * e * e * c.size.z / 3
+                                                        : 4.0 / 3.0 * std::numbers::pi * c.size.x * c.size.y * c.size.z;
+    const double spacing = std::cbrt(volume / c.points);
+    c.kill = m.segmentLength * between(1.0, 2.5);
+    c.influence = std::max(2 * c.kill, spacing * between(2.0, 4.0));  // a point reaches the nodes around it before it dies
+    m.clouds.push_back(c);
+  }
+  const int obstacles = static_cast<int>(between(0, 3));
+  for (int k = 0; k < obstacles; ++k) {
+    for (int attempt = 0; attempt < 10; ++attempt) {
+      sc::Obstacle o;
+      o.shape = rng.uniform() < 0.5 ? sc::ObstacleShape::Box : sc::ObstacleShape::Sphere;
+      const double r = between(0.1, 0.8);
+      o.size = o.shape == sc::ObstacleShape::Sphere ? Vec3(r) : Vec3(between(0.1, 2) * r, between(0.1, 2) * r, between(0.1, 2) * r);
+      const double off = between(0.3, 2.5), turn = 2 * std::numbers::pi * rng.uniform();
+      o.center = m.trunkBase + Vec3(off * std::cos(turn), off * std::sin(turn), top + between(-0.5, 2.5));
+      bool onTrunk = false;  // the reader refuses a trunk inside an obstacle; tested as it tests
+      for (int s = 0; s < m.trunkSegments; ++s) {
+        const Vec3 a = m.trunkBase + Vec3(0, 0, m.segmentLength * s);
+        onTrunk |= sc::segmentHitsObstacle(o, a, a + Vec3(0, 0, m.segmentLength));
+      }
+      if (!onTrunk) {
+        m.obstacles.push_back(o);
+        break;
+      }
+    }
+  }
+  m.tipRadius = between(0.003, 0.01);
+  m.exponent = between(2.0, 3.0);
+  m.leafDepth = static_cast<int>(between(-1, 5));
+  m.leafLength = between(0.05, 0.2);
+  m.leafWidth = m.leafLength * between(0.3, 0.6);
   return TreeModel(std::make_unique<SpaceColonizationParams>(std::move(m)));
 }
 
