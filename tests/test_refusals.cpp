@@ -195,6 +195,17 @@ TEST_CASE("an output path that cannot be written is refused with 2 before any wo
   checkRefused(run("view palm --offscreen --frames 1 --out " + file + "/shots"), {"--out"});
 }
 
+TEST_CASE("misdirected requests are named for what they are: a missing path, an unknown command, a format not written", "[cli][refusal]") {
+  const std::string out = arbor::test::tempPath("misdirected.obj");
+  checkRefused(run("generate " + arbor::test::tempPath("no-such-model.json") + " --out " + out), {"no such file", "no-such-model.json"});
+  checkRefused(run("frobnicate"), {"unknown command 'frobnicate'", "generate", "view"});
+  checkRefused(run("species palm --out " + arbor::test::tempPath("palm.xml")), {"--out", ".json"});
+  checkRefused(run("generate palm --triangles --out " + arbor::test::tempPath("palm.glb")), {"--triangles", ".obj only"});
+  CHECK_FALSE(fs::exists(arbor::test::tempPath("palm.xml")));
+  CHECK_FALSE(fs::exists(arbor::test::tempPath("palm.glb")));
+  CHECK_FALSE(fs::exists(out));
+}
+
 TEST_CASE("a refused benchmark leaves an existing CSV as it was", "[cli][refusal]") {
   const std::string csv = writeTemp("keep.csv", "earlier figures\n");
   checkRefused(run("bench tess palm --modes magic --csv " + csv), {"--modes"});

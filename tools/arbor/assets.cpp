@@ -73,6 +73,9 @@ std::string presetFile(const std::string& name) {
 }
 
 [[noreturn]] void neitherFileNorPreset(const std::string& argument, const std::string& files) {
+  // A path (a folder or an extension in it) is a file the user meant, not a preset name mistyped.
+  if (argument.find('/') != std::string::npos || fs::path(argument).has_extension())
+    throw InputError(argument, "(argument)", "no such file (expected " + files + ", or a preset name)");
   std::string list;
   for (const std::string& name : presetNames()) list += (list.empty() ? "" : ", ") + name;
   throw InputError(argument, "(argument)", "is neither " + files + " nor a preset; presets: " + list);

@@ -62,6 +62,9 @@ void printNotes(const std::string& species, const ImportNotes& notes) {
 int runGenerate(const GenerateOptions& o) {
   const OutputType type = outputType(o.out);
   requireOutputFile(o.out);
+  if (o.triangles && type != OutputType::Obj) {
+    throw InputError(o.out, "--triangles", "applies to .obj only (glTF and GLB always hold triangles; a skeleton none)");
+  }
   if (type == OutputType::Skeleton && (o.subdivide > 0 || o.triangles)) {
     throw InputError(o.out, "--out", "--subdivide and --triangles apply to meshes (.obj, .gltf, .glb), not to a skeleton");
   }

@@ -1,5 +1,6 @@
 // arbor species: list growth models and presets, show a model file's parameters, or convert an Arbaro XML file
 // to Arbor JSON.
+#include <filesystem>
 #include <cstdio>
 #include <memory>
 
@@ -10,6 +11,8 @@
 #include "growth/growth_models.hpp"
 
 namespace arbor::cli {
+
+namespace fs = std::filesystem;
 
 namespace {
 
@@ -63,6 +66,8 @@ int runSpecies(const SpeciesOptions& o) {
   }
   if (!o.random.empty() && !o.species.empty()) throw InputError(o.species, "--random", "give either a species or --random SEED, not both");
   if (!o.out.empty()) requireOutputFile(o.out);
+  if (!o.out.empty() && fs::path(o.out).extension() != ".json")
+    throw InputError(o.out, "--out", "species are written as Arbor JSON: give a .json file (Arbaro XML is read, not written)");
   ImportNotes notes;
   const TreeModel tree = o.random.empty() ? modelOf(loadTreeArgument(o.species, &notes, o.angles), o.species) : model.random(std::stoull(o.random));
   const std::string json = tree.toJson();

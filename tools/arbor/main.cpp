@@ -59,6 +59,17 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
+    // CLI11 says "A subcommand is required" for a mistyped one too: name it and the commands there are.
+    std::string names;
+    bool known = false;
+    for (const CLI::App* sub : app.get_subcommands({})) {
+      names += (names.empty() ? "" : ", ") + sub->get_name();
+      known = known || (argc > 1 && sub->get_name() == argv[1]);
+    }
+    if (argc > 1 && argv[1][0] != '-' && !known) {
+      std::fprintf(stderr, "arbor: usage error: unknown command '%s'; commands: %s\nRun 'arbor --help'.\n", argv[1], names.c_str());
+      return kExitBadInput;
+    }
     std::fprintf(stderr, "arbor: usage error: %s\nRun 'arbor --help' or 'arbor <command> --help'.\n", e.what());
     return kExitBadInput;
   }
