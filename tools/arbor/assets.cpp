@@ -6,6 +6,7 @@
 #include <utility>
 #include <unistd.h>
 
+#include "common/input_error.hpp"
 #include "common/input_file.hpp"
 #include "growth/growth_models.hpp"
 
@@ -14,16 +15,25 @@ namespace arbor::cli {
 namespace fs = std::filesystem;
 
 std::string assetDirectory() {
-  if (const char* env = std::getenv("ARBOR_ASSETS"); env && *env) return env;
-  if (fs::is_directory(fs::path(ARBOR_ASSET_DIR) / "presets")) return ARBOR_ASSET_DIR;
+  // $ARBOR_ASSETS first; then beside the binary (installed: PREFIX/share/arbor; a copied tree: assets/); then
+  // the source tree the binary was built from. None with presets: an error, never an empty preset list.
+  if (const char* env = std::getenv("ARBOR_ASSETS"); env && *env) {
+    if (!fs::is_directory(fs::path(env) / "presets")) throw InputError(env, "ARBOR_ASSETS", "has no presets/ folder; point it at Arbor's assets");
+    return env;
+  }
+  std::vector<fs::path> candidates;
   std::error_code ec;
   const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
   if (!ec) {
-    for (const fs::path& candidate : {exe.parent_path() / "assets", exe.parent_path().parent_path() / "assets"}) {
-      if (fs::is_directory(candidate / "presets")) return candidate.string();
-    }
+    candidates = {exe.parent_path().parent_path() / "share" / "arbor", exe.parent_path() / "assets", exe.parent_path().parent_path() / "assets"};
   }
-  return ARBOR_ASSET_DIR;
+  candidates.emplace_back(ARBOR_ASSET_DIR);
+  std::string looked;
+  for (const fs::path& candidate : candidates) {
+    if (fs::is_directory(candidate / "presets", ec)) return candidate.string();
+    looked += (looked.empty() ? "" : ", ") + candidate.string();
+  }
+  throw InputError("assets", "ARBOR_ASSETS", "no assets folder with presets found (looked in " + looked + "); install Arbor or set ARBOR_ASSETS");
 }
 
 namespace {
