@@ -88,7 +88,14 @@ int runGenerate(const GenerateOptions& o) {
   if (type != OutputType::Skeleton) {
     tree = buildTree(skeleton, BuildOptions{o.mesh, false}).mesh;  // patches are counted on another core below
     meshMs = ms(t1, Clock::now());
-    if (o.subdivide > 0) subdivided = subdivide(tree.mesh, o.subdivide);
+    if (o.subdivide > 0) {
+      // Subdividing a large tree takes seconds: say what is happening rather than sit silent.
+      if (!o.quiet)
+        std::fprintf(stderr, "arbor generate: meshed %zu quads in %.0f ms; subdividing %d time%s (about %zu quads)...\n", tree.mesh.quads.size(), meshMs,
+                     o.subdivide, o.subdivide > 1 ? "s" : "", tree.mesh.quads.size() << (2 * o.subdivide));
+      subdivided = subdivide(tree.mesh, o.subdivide);
+      if (!o.quiet) std::fprintf(stderr, "arbor generate: subdivided in %.0f ms; writing %s...\n", ms(t1, Clock::now()) - meshMs, o.out.c_str());
+    }
   }
   const QuadMesh& exported = o.subdivide > 0 ? subdivided : tree.mesh;
   if (type == OutputType::Gltf) content = writeGltf(exported, source.name());
