@@ -2,6 +2,7 @@
 // subdivision keeps the mesh closed, oriented and on the limit surface it should be on.
 // The meshes are built here (a cube and a capped tube) so these tests do not depend on the mesh builder.
 #include <catch2/catch.hpp>
+#include <sstream>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -204,6 +205,30 @@ TEST_CASE("OBJ quads read back bit for bit", "[export][obj]") {
       CHECK(back.uvw[i].x == m.uvw[i].x);
       CHECK(back.uvw[i].y == m.uvw[i].y);
     }
+    CHECK(back.quads == m.quads);
+  }
+}
+
+TEST_CASE("OBJ is y up by default, z up on request, and both read back to Arbor's axes", "[export][obj]") {
+  const QuadMesh m = tube(5);
+  const auto firstLine = [](const std::string& text, const std::string& keyword) {
+    const std::size_t at = text.find("\n" + keyword + " ");
+    std::istringstream in(text.substr(at + keyword.size() + 2));
+    glm::vec3 v;
+    in >> v.x >> v.y >> v.z;
+    return v;
+  };
+  const std::string yUp = writeObj(m, false), zUp = writeObj(m, false, Up::Z);
+  CHECK_THAT(yUp, Contains("y up"));
+  CHECK_THAT(zUp, Contains("z up"));
+  // A rotation about x: Arbor's up (z) becomes y, its y becomes -z; normals turn with the points.
+  CHECK(firstLine(yUp, "v") == glm::vec3(m.positions[0].x, m.positions[0].z, -m.positions[0].y));
+  CHECK(firstLine(yUp, "vn") == glm::vec3(m.normals[0].x, m.normals[0].z, -m.normals[0].y));
+  CHECK(firstLine(zUp, "v") == m.positions[0]);
+  for (const std::string& text : {yUp, zUp}) {
+    const QuadMesh back = readObj(text, "axes.obj");
+    CHECK(back.positions == m.positions);
+    CHECK(back.normals == m.normals);
     CHECK(back.quads == m.quads);
   }
 }

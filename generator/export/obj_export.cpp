@@ -133,7 +133,7 @@ std::optional<Quad> joinTriangles(const Triangle& first, const Triangle& second)
 
 }  // namespace
 
-void writeObj(const QuadMesh& mesh, bool triangles, std::ostream& stream) {
+void writeObj(const QuadMesh& mesh, bool triangles, std::ostream& stream, Up up) {
   exporting::requirePerVertex(mesh, mesh.normals.size(), "normals", "writeObj");
   exporting::requirePerVertex(mesh, mesh.uvw.size(), "uvw", "writeObj");
   exporting::requireQuadIndicesInRange(mesh, "writeObj");
@@ -152,19 +152,25 @@ void writeObj(const QuadMesh& mesh, bool triangles, std::ostream& stream) {
   const std::size_t counts[4] = {mesh.vertexCount(), mesh.vertexCount(), mesh.vertexCount(), faceCount};
   for (int section = 0; section < 4; ++section)
     for (std::size_t i = 0; i < counts[section]; i += kLines) blocks.push_back({section, i, std::min(counts[section], i + kLines)});
+  const auto axes = [up](const glm::vec3& p) { return up == Up::Y ? glm::vec3(p.x, p.z, -p.y) : p; };
   auto print = [&](const Block& b) {
     std::string out;
     out.reserve((b.end - b.begin) * 64);
     for (std::size_t i = b.begin; i < b.end; ++i) {
-      if (b.section == 0) appendLine(out, "v", {mesh.positions[i].x, mesh.positions[i].y, mesh.positions[i].z});
-      else if (b.section == 1) appendLine(out, "vt", {mesh.uvw[i].x, mesh.uvw[i].y});
-      else if (b.section == 2) appendLine(out, "vn", {mesh.normals[i].x, mesh.normals[i].y, mesh.normals[i].z});
-      else if (triangles) appendFace(out, triangleList[i]);
-      else appendFace(out, mesh.quads[i]);
+      if (b.section == 1) {
+        appendLine(out, "vt", {mesh.uvw[i].x, mesh.uvw[i].y});
+      } else if (b.section == 0 || b.section == 2) {
+        const glm::vec3 q = axes(b.section == 0 ? mesh.positions[i] : mesh.normals[i]);
+        appendLine(out, b.section == 0 ? "v" : "vn", {q.x, q.y, q.z});
+      } else if (triangles) {
+        appendFace(out, triangleList[i]);
+      } else {
+        appendFace(out, mesh.quads[i]);
+      }
     }
     return out;
   };
-  const std::string header = "# Arbor tree mesh: object space in metres, z up\n# " + std::to_string(mesh.vertexCount()) +
+  const std::string header = std::string("# Arbor tree mesh: object space in metres, ") + (up == Up::Y ? "y up" : "z up") + "\n# " + std::to_string(mesh.vertexCount()) +
                              " vertices, " + std::to_string(faceCount) + (triangles ? " triangles" : " quads") +
                              "; vt is (u, v), the flip coordinate is not stored\n";
   stream.write(header.data(), static_cast<std::streamsize>(header.size()));
@@ -198,9 +204,9 @@ void writeObj(const QuadMesh& mesh, bool triangles, std::ostream& stream) {
   for (std::thread& t : workers) t.join();
 }
 
-std::string writeObj(const QuadMesh& mesh, bool triangles) {
+std::string writeObj(const QuadMesh& mesh, bool triangles, Up up) {
   std::ostringstream out;
-  writeObj(mesh, triangles, out);
+  writeObj(mesh, triangles, out, up);
   return std::move(out).str();
 }
 
@@ -210,6 +216,7 @@ QuadMesh readObj(const std::string& text, const std::string& file) {
   std::vector<std::size_t> faceLines;  // for naming a face whose index turns out too large
   std::optional<Triangle> pending;     // first triangle of a pair, waiting for its partner
   std::size_t pendingLine = 0;
+  bool yUp = false;  // Arbor's own header says so; any other file is read as it stands
 
   std::size_t start = 0;
   while (start <= text.size()) {
@@ -217,13 +224,15 @@ QuadMesh readObj(const std::string& text, const std::string& file) {
     ++reader.line;
     const auto w = words(std::string_view(text).substr(start, stop - start));
     start = stop + 1;
+    if (reader.line == 1 && text.compare(0, 17, "# Arbor tree mesh") == 0) yUp = text.substr(0, stop).find("y up") != std::string::npos;
     if (w.empty() || w[0].front() == '#') continue;
 
     const std::string_view keyword = w[0];
     const std::size_t arguments = w.size() - 1;
     if (keyword == "v" || keyword == "vn") {
       if (arguments != 3) reader.fail(std::string(keyword) + " needs 3 numbers, found " + std::to_string(arguments));
-      const glm::vec3 value(reader.number(w[1]), reader.number(w[2]), reader.number(w[3]));
+      glm::vec3 value(reader.number(w[1]), reader.number(w[2]), reader.number(w[3]));
+      if (yUp) value = glm::vec3(value.x, -value.z, value.y);
       (keyword == "v" ? mesh.positions : mesh.normals).push_back(value);
     } else if (keyword == "vt") {
       if (arguments != 2 && arguments != 3) reader.fail("vt needs 2 numbers, found " + std::to_string(arguments));

@@ -32,6 +32,7 @@ struct GenerateOptions {
   bool quiet = false;
   MeshOptions mesh;
   bool triangles = false;
+  std::string up = "y";  // the OBJ's up axis
   int subdivide = 0;
 };
 
@@ -62,6 +63,9 @@ void printNotes(const std::string& species, const ImportNotes& notes) {
 int runGenerate(const GenerateOptions& o) {
   const OutputType type = outputType(o.out);
   requireOutputFile(o.out);
+  if (o.up != "y" && type != OutputType::Obj) {
+    throw InputError(o.out, "--up", "applies to .obj only (glTF is y up by its specification; the skeleton keeps Arbor's z up)");
+  }
   if (o.triangles && type != OutputType::Obj) {
     throw InputError(o.out, "--triangles", "applies to .obj only (glTF and GLB always hold triangles; a skeleton none)");
   }
@@ -110,7 +114,7 @@ int runGenerate(const GenerateOptions& o) {
     summary = std::async(std::launch::async, [&tree] { return MeshSummary{checkTopology(tree.mesh), buildPatches(tree.mesh)}; });
   }
   if (type == OutputType::Skeleton) writeFileAtomically(o.out, [&](std::ostream& out) { writeSkeletonJson(skeleton, out); });
-  else if (type == OutputType::Obj) writeFileAtomically(o.out, [&](std::ostream& out) { writeObj(exported, o.triangles, out); });
+  else if (type == OutputType::Obj) writeFileAtomically(o.out, [&](std::ostream& out) { writeObj(exported, o.triangles, out, o.up == "z" ? Up::Z : Up::Y); });
   else writeFileAtomically(o.out, content);
   if (o.quiet) return 0;
 
@@ -183,6 +187,9 @@ void addOptions(CLI::App* cmd, GenerateOptions& o, const char* input) {
       ->check(Whole(0, 8));
   cmd->add_flag("--open-base", o.mesh.openBase, "Leave the ring at the trunk base open (closed by default)");
   cmd->add_flag("--triangles", o.triangles, "Write triangles instead of quads to .obj");
+  cmd->add_option("--up", o.up, "The .obj's up axis: y (as Blender and most tools import OBJ) or z (Arbor's own axes)")
+      ->check(CLI::IsMember({"y", "z"}))
+      ->capture_default_str();
   cmd->add_option("--subdivide", o.subdivide, "Export the mesh after N Catmull-Clark levels (OpenSubdiv)")
       ->check(Whole(0, 6));
   cmd->add_flag("--quiet", o.quiet, "Print nothing on success");

@@ -30,6 +30,7 @@ struct GrowOptions {
   std::uint32_t steps = 0;          // iterations (growth ages); 0: to the end
   std::size_t stepSize = 10'000;    // nodes processed per pause (Patrick et al.'s step size)
   std::uint64_t seed = 1;
+  std::string up = "y";  // the OBJ's up axis
 };
 
 struct BenchGrowOptions {
@@ -87,7 +88,7 @@ int runGrow(const GrowOptions& o) {
     // The tree build stage every command uses, as `arbor generate` meshes a model grown to the end.
     const Skeleton skeleton = colonizationSkeleton(colonizer, model, o.seed, limits);
     const TreeMesh tree = buildTree(skeleton, BuildOptions{{}, false}).mesh;
-    writeFileAtomically(o.out, [&](std::ostream& out) { writeObj(tree.mesh, false, out); });
+    writeFileAtomically(o.out, [&](std::ostream& out) { writeObj(tree.mesh, false, out, o.up == "z" ? Up::Z : Up::Y); });
     written = std::to_string(tree.mesh.quads.size()) + " quads";
   }
   std::printf("%s, seed %llu: %u iterations (%s), %zu nodes, %zu enabled, %zu of %zu attraction points live, grown in %.1f ms\n",
@@ -166,6 +167,9 @@ void addGrowCommand(CLI::App& app, Action& action) {
                   "Output file: .json writes the enabled nodes as an arbor-graph/1 branch graph ('arbor mesh', 'render' and 'view' "
                   "take it); .obj writes the closed quad mesh")
       ->required();
+  cmd->add_option("--up", o->up, "The .obj's up axis: y (as Blender and most tools import OBJ) or z (Arbor's own axes)")
+      ->check(CLI::IsMember({"y", "z"}))
+      ->capture_default_str();
   cmd->callback([o, &action] { action = [o] { return runGrow(*o); }; });
 }
 
