@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <cctype>
 #include <sstream>
 #include <nlohmann/json.hpp>
 
@@ -479,5 +480,46 @@ TEST_CASE("textures and bench tess refuse values out of range with 2", "[cli]") 
     INFO(arguments << "\n" << r.output);
     CHECK(r.exitCode == 2);
     CHECK_THAT(r.output, Catch::Contains(field));
+  }
+}
+
+namespace {
+
+// The subcommands `arbor --help` (or `arbor bench --help`) lists, each as "  name   description".
+std::vector<std::string> listedSubcommands(const std::string& help) {
+  std::vector<std::string> names;
+  const std::size_t section = help.find("Subcommands:");
+  std::istringstream in(section == std::string::npos ? "" : help.substr(section));
+  std::string line;
+  std::getline(in, line);
+  while (std::getline(in, line) && line.rfind("  ", 0) == 0) {
+    std::istringstream words(line);
+    std::string name;
+    words >> name;
+    names.push_back(name);
+  }
+  return names;
+}
+
+}  // namespace
+
+TEST_CASE("README names every option of every command", "[cli][docs]") {
+  const std::string readme = arbor::readFile(std::string(ARBOR_SOURCE_DIR) + "/README.md");
+  std::vector<std::string> commands;
+  for (const std::string& c : listedSubcommands(run("--help").output)) {
+    if (c != "bench") commands.push_back(c);
+  }
+  for (const std::string& c : listedSubcommands(run("bench --help").output)) commands.push_back("bench " + c);
+  REQUIRE(commands.size() >= 15);
+  for (const std::string& command : commands) {
+    const std::string help = run(command + " --help").output;
+    for (std::size_t at = help.find("--"); at != std::string::npos; at = help.find("--", at + 2)) {
+      std::size_t end = at + 2;
+      while (end < help.size() && (std::islower(static_cast<unsigned char>(help[end])) || std::isdigit(static_cast<unsigned char>(help[end])) || help[end] == '-')) ++end;
+      const std::string option = help.substr(at, end - at);
+      if (option.size() < 3 || option == "--help") continue;
+      INFO(command << " " << option);
+      CHECK(readme.find(option) != std::string::npos);
+    }
   }
 }
