@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "common/atomic_file.hpp"
 #include "image/image_compare.hpp"
 #include "image/png_io.hpp"
 #include "render_support.hpp"
@@ -241,6 +242,34 @@ TEST_CASE("the modeller grows, pauses, rewinds, regrows and takes clouds and obs
   CHECK(f[8].clouds == 1);
   CHECK(f[8].nodes == f[7].nodes);    // nodes never go with a cloud
   CHECK(fs::exists(fs::path(dir) / "frame-0009.png"));
+}
+
+TEST_CASE("the viewer saves the edited model and exports the mesh shown, from a script", "[view][sc]") {
+  const std::string dir = freshDir("view-save");
+  fs::create_directories(dir);
+  const std::string model = dir + "/edited.json", glb = dir + "/age20.glb", obj = dir + "/age20.obj";
+  const Result r = run(kNoDisplay, "sc-open-broadleaf --size 160x120 --frames 2 --out " + dir + "/shots --events 1:rewind=20,"
+                                       "1:add-cloud=sphere/3.8/0/4.6/1/1/1/400/1.5/0.3,2:save=" + model + ",2:export=" + glb + ",2:export=" + obj);
+  INFO(r.output);
+  REQUIRE(r.exitCode == 0);
+  CHECK_THAT(r.output, Catch::Contains("wrote " + model));
+  const std::string saved = readFile(model);
+  std::size_t clouds = 0;
+  for (std::size_t at = saved.find("\"influence\""); at != std::string::npos; at = saved.find("\"influence\"", at + 1)) ++clouds;
+  CHECK(clouds == 2);  // the added cloud is in the file
+  CHECK(fs::file_size(glb) > 1000);
+  // The exported mesh reads back and holds no intersecting pair; the saved model grows again.
+  CHECK(test::runCommand(std::string(ARBOR_BINARY) + " check " + obj + " 2>&1").exitCode == 0);
+  CHECK(test::runCommand(std::string(ARBOR_BINARY) + " generate " + model + " --quiet --out " + dir + "/regrown.obj 2>&1").exitCode == 0);
+
+  const Result forest = run(kNoDisplay, "palm --size 160x120 --frames 1 --out " + dir + "/palm-shots --events 1:save=" + dir +
+                                            "/palm.json,1:export=" + dir + "/palm.obj");
+  INFO(forest.output);
+  REQUIRE(forest.exitCode == 0);
+  CHECK(readFile(dir + "/palm.json") == test::runCommand(std::string(ARBOR_BINARY) + " species palm").output);
+  const Result bad = run(kNoDisplay, "palm --frames 1 --out " + dir + "/bad --events 1:export=" + dir + "/palm.stl");
+  CHECK(bad.exitCode == 2);
+  CHECK_THAT(bad.output, Catch::Contains(".obj, .gltf or .glb"));
 }
 
 TEST_CASE("the modeller's picture: tree, cloud and obstacle wireframes, live points (golden)", "[view][sc][golden]") {

@@ -11,12 +11,11 @@
 #include "common/text_util.hpp"
 #include "growth/skeleton_checks.hpp"
 #include "growth/skeleton_json.hpp"
-#include "export/gltf_export.hpp"
-#include "export/obj_export.hpp"
 #include "export/subdivide.hpp"
 #include "mesh/mesh_checks.hpp"
 #include "mesh/tree_mesh.hpp"
 #include "tree/build_tree.hpp"
+#include "tree_file.hpp"
 #include "patches/patch_set.hpp"
 
 namespace arbor::cli {
@@ -85,7 +84,6 @@ int runGenerate(const GenerateOptions& o) {
   const Skeleton skeleton = source.grow(growth);
   const auto t1 = Clock::now();
 
-  std::string content;
   TreeMesh tree;
   QuadMesh subdivided;
   double meshMs = 0.0;
@@ -102,8 +100,6 @@ int runGenerate(const GenerateOptions& o) {
     }
   }
   const QuadMesh& exported = o.subdivide > 0 ? subdivided : tree.mesh;
-  if (type == OutputType::Gltf) content = writeGltf(exported, source.name());
-  if (type == OutputType::Glb) content = writeGlb(exported, source.name());
   // The summary's topology and patch counts are worked out on another core while the file is written.
   struct MeshSummary {
     MeshTopologyReport topology;
@@ -114,8 +110,7 @@ int runGenerate(const GenerateOptions& o) {
     summary = std::async(std::launch::async, [&tree] { return MeshSummary{checkTopology(tree.mesh), buildPatches(tree.mesh)}; });
   }
   if (type == OutputType::Skeleton) writeFileAtomically(o.out, [&](std::ostream& out) { writeSkeletonJson(skeleton, out); });
-  else if (type == OutputType::Obj) writeFileAtomically(o.out, [&](std::ostream& out) { writeObj(exported, o.triangles, out, o.up == "z" ? Up::Z : Up::Y); });
-  else writeFileAtomically(o.out, content);
+  else writeMeshFile(o.out, exported, source.name(), MeshFileOptions{o.triangles, o.up == "z" ? Up::Z : Up::Y});
   if (o.quiet) return 0;
 
   const SkeletonStats stats = skeletonStats(skeleton);

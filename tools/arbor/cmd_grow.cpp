@@ -10,6 +10,7 @@
 #include "assets.hpp"
 #include "cli_values.hpp"
 #include "commands.hpp"
+#include "tree_file.hpp"
 #include "common/atomic_file.hpp"
 #include "common/text_util.hpp"
 #include "export/obj_export.hpp"
@@ -88,7 +89,7 @@ int runGrow(const GrowOptions& o) {
     // The tree build stage every command uses, as `arbor generate` meshes a model grown to the end.
     const Skeleton skeleton = colonizationSkeleton(colonizer, model, o.seed, limits);
     const TreeMesh tree = buildTree(skeleton, BuildOptions{{}, false}).mesh;
-    writeFileAtomically(o.out, [&](std::ostream& out) { writeObj(tree.mesh, false, out, o.up == "z" ? Up::Z : Up::Y); });
+    writeMeshFile(o.out, tree.mesh, model.name, MeshFileOptions{false, o.up == "z" ? Up::Z : Up::Y});
     written = std::to_string(tree.mesh.quads.size()) + " quads";
   }
   std::printf("%s, seed %llu: %u iterations (%s), %zu nodes, %zu enabled, %zu of %zu attraction points live, grown in %.1f ms\n",

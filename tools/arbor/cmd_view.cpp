@@ -14,7 +14,9 @@
 #include "forest_scene.hpp"
 #include "growth/space_colonization/space_colonization_model.hpp"
 #include "growth_scene.hpp"
+#include "common/text_util.hpp"
 #include "render_options.hpp"
+#include "tree_file.hpp"
 #include "view_script.hpp"
 #include "viewer.hpp"
 #include "window/window.hpp"
@@ -101,6 +103,15 @@ int runView(const ViewOptions& o) {
   const bool modeller = opensModeller(o, sources);
   if (modeller) viewer::GrowthScene::checkEvents(*sources.front().model(), v.events);
   for (const viewer::WindowEvent& e : v.events) {
+    // Saved and exported files are checked like --out: a folder that is there and writable, a fitting extension.
+    if (e.action == "save" || e.action == "export") {
+      requireOutputFile(e.text, "--events");
+      if (e.action == "save" && !endsWith(e.text, ".json")) throw InputError(e.text, "--events", "save writes the model as .json");
+      if (e.action == "export" && !isMeshFile(e.text)) throw InputError(e.text, "--events", "export writes the mesh as .obj, .gltf or .glb");
+      if (!modeller && !sources.front().model() && e.action == "save")
+        throw InputError(e.text, "--events", o.species.front() + " is a skeleton given whole: there is no model to save");
+      continue;
+    }
     if (!modeller && viewer::isSceneEvent(e) && e.action != "regenerate")
       throw InputError(std::to_string(e.frame) + ":" + e.action, "--events",
                        "the modeller's events need one space-colonization model and --forest 1 (e.g. arbor view sc-open-broadleaf)");

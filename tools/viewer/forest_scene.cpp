@@ -4,6 +4,10 @@
 
 #include <imgui.h>
 
+#include "common/atomic_file.hpp"
+#include "common/input_error.hpp"
+#include "tree/build_tree.hpp"
+#include "tree_file.hpp"
 #include "view_panel.hpp"
 
 namespace arbor::viewer {
@@ -21,9 +25,29 @@ std::string ForestScene::summary() const {
 }
 
 bool ForestScene::handle(const WindowEvent& event) {
-  if (event.action != "regenerate") return false;
-  regenerate_ = true;  // as the panel's button does
+  if (event.action == "save") save(event.text);
+  else if (event.action == "export") exportMesh(event.text);
+  else if (event.action == "regenerate") regenerate_ = true;  // as the panel's button does
+  else return false;
   return true;
+}
+
+void ForestScene::save(const std::string& path) {
+  const TreeModel* model = request_.sources.front().model();
+  if (!model) throw InputError(path, "save", request_.labels.front() + " is a skeleton given whole: there is no model to save");
+  writeFileAtomically(path, model->toJson());
+  std::printf("wrote %s (%s, as edited)\n", path.c_str(), request_.labels.front().c_str());
+  std::fflush(stdout);
+}
+
+void ForestScene::exportMesh(const std::string& path) {
+  // The first tree as the forest grew it (its first seed), whole: every level meshed.
+  GrowthOptions growth;
+  growth.seed = request_.seed;
+  const Skeleton skeleton = request_.sources.front().grow(growth);
+  cli::writeMeshFile(path, buildTree(skeleton, BuildOptions{{}, false}).mesh.mesh, request_.labels.front());
+  std::printf("wrote %s (%s, seed %llu)\n", path.c_str(), request_.labels.front().c_str(), static_cast<unsigned long long>(request_.seed));
+  std::fflush(stdout);
 }
 
 void ForestScene::update(render::TreeRenderer& renderer) {
@@ -62,6 +86,8 @@ void ForestScene::panel(ViewState&) {
     ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.35f, 1.0f), "not regenerated:");
     ImGui::TextWrapped("%s", refusal_.c_str());
   }
+  ImGui::Text("the first tree, %s:", request_.labels.front().c_str());
+  fileButtons(outputPath_, fileStatus_, [&](const std::string& p) { save(p); }, [&](const std::string& p) { exportMesh(p); });
 }
 
 void ForestScene::updateEstimates() {

@@ -28,6 +28,8 @@ class ForestScene final : public ViewerScene {
 
  private:
   void updateEstimates();
+  void save(const std::string& path);        // the first source's model, as edited, as JSON
+  void exportMesh(const std::string& path);  // the first tree's whole mesh (.obj, .gltf, .glb)
 
   cli::ForestRequest request_;  // the panel edits its sources' models
   const vk::VulkanContext* context_ = nullptr;
@@ -35,6 +37,8 @@ class ForestScene final : public ViewerScene {
   std::vector<TreeEstimate> estimates_;  // per source, redone whenever a slider moves
   std::string refusal_;                  // why the trees as set would not be grown ("" when they would)
   bool regenerate_ = false;
+  std::string outputPath_ = "out/tree.json";  // the panel's save / export field
+  std::string fileStatus_;                     // what the last save or export did
 };
 
 }  // namespace arbor::viewer

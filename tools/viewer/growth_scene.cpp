@@ -8,6 +8,10 @@
 #include <imgui.h>
 
 #include "assets.hpp"
+#include "common/atomic_file.hpp"
+#include "tree/build_tree.hpp"
+#include "tree_file.hpp"
+#include "view_panel.hpp"
 #include "common/input_error.hpp"
 #include "growth/graph/branch_graph.hpp"
 #include "growth/space_colonization/space_colonization.hpp"
@@ -67,7 +71,7 @@ Vec3 aboveTree(const sc::Colonizer& c) {
 }  // namespace
 
 bool isModellerEvent(const WindowEvent& e) {
-  static const char* const actions[] = {"open", "grow", "pause", "step", "finish", "rewind", "reset", "regenerate",
+  static const char* const actions[] = {"open", "save", "export", "grow", "pause", "step", "finish", "rewind", "reset", "regenerate",
                                         "add-cloud", "move-cloud", "resize-cloud", "remove-cloud",
                                         "add-obstacle", "move-obstacle", "resize-obstacle", "remove-obstacle"};
   return std::any_of(std::begin(actions), std::end(actions), [&](const char* a) { return e.action == a; });
@@ -127,6 +131,7 @@ void GrowthScene::checkEvents(const TreeModel& model, const std::vector<WindowEv
   sc::SpaceColonization m = requireColonization(model);
   for (const WindowEvent& e : ordered) {
     if (!isModellerEvent(e)) throw InputError(eventText(e), "--events", "not an event of the modeller");
+    if (e.action == "save" || e.action == "export") continue;  // their paths are checked with every scene's
     if (e.action == "open") {
       const TreeModel next = cli::loadModelArgument(e.text);
       const sc::SpaceColonization* opened = spaceColonizationOf(next);
@@ -189,6 +194,8 @@ bool GrowthScene::handle(const WindowEvent& e) {
   if (!isModellerEvent(e)) return false;
   const std::string& a = e.action;
   if (a == "open") open(cli::loadModelArgument(e.text));
+  else if (a == "save") save(e.text);
+  else if (a == "export") exportMesh(e.text);
   else if (a == "grow") growing_ = true;
   else if (a == "pause") growing_ = false;
   else if (a == "step") colonizer_->step(static_cast<std::size_t>(e.numbers[0]));
@@ -228,6 +235,20 @@ bool GrowthScene::tryEdit(const WindowEvent& e) {
     message_ = error.what();
     return false;
   }
+}
+
+void GrowthScene::save(const std::string& path) {
+  // The model as it stands: clouds and obstacles where the artist left them (growth replays them from the start).
+  writeFileAtomically(path, sc::writeSpaceColonization(model_));
+  std::printf("wrote %s (the model)\n", path.c_str());
+  std::fflush(stdout);
+}
+
+void GrowthScene::exportMesh(const std::string& path) {
+  const Skeleton skeleton = colonizationSkeleton(*colonizer_, model_, seed_, TreeLimits{});
+  cli::writeMeshFile(path, buildTree(skeleton, BuildOptions{{}, false}).mesh.mesh, model_.name);
+  std::printf("wrote %s (the mesh at age %u)\n", path.c_str(), colonizer_->age());
+  std::fflush(stdout);
 }
 
 void GrowthScene::start(const vk::VulkanContext& context, render::TreeRenderer& renderer) {
@@ -455,6 +476,7 @@ void GrowthScene::panel(ViewState&) {
     }
     ImGui::TreePop();
   }
+  fileButtons(outputPath_, fileStatus_, [&](const std::string& p) { save(p); }, [&](const std::string& p) { exportMesh(p); });
   if (!message_.empty()) {
     ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.35f, 1.0f), "refused:");
     ImGui::TextWrapped("%s", message_.c_str());

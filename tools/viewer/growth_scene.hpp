@@ -48,6 +48,8 @@ class GrowthScene final : public ViewerScene {
   void apply(const sc::SpaceColonization& edited, const WindowEvent& event);  // the colonizer follows the edit
   bool tryEdit(const WindowEvent& event);  // the panel's edits: false (and a message) when the model refuses
   bool replaceCloud(std::size_t index, const sc::AttractionCloud& cloud);  // likewise, for shape, points and radii
+  void save(const std::string& path);        // the edited model as a model file
+  void exportMesh(const std::string& path);  // the mesh of the state shown (.obj, .gltf, .glb)
   void rebuildTree(render::TreeRenderer& renderer);
   void rebuildLines();
   render::Bounds workingBounds() const;  // world space, as the tree stands
@@ -62,6 +64,8 @@ class GrowthScene final : public ViewerScene {
   bool showPoints_ = true, showWireframes_ = true;
   std::string message_;             // the last refused edit
   std::string pathInput_;           // the panel's file field
+  std::string outputPath_ = "out/model.json";  // the panel's save / export field
+  std::string fileStatus_;                     // what the last save or export did
   std::vector<std::string> presets_;  // space-colonization presets, for the panel's list
 
   const vk::VulkanContext* context_ = nullptr;

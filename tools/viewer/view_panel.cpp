@@ -6,6 +6,11 @@
 
 #include <imgui.h>
 
+#include "cli_values.hpp"
+#include "common/input_error.hpp"
+#include "common/text_util.hpp"
+#include "tree_file.hpp"
+
 namespace arbor::viewer {
 
 namespace {
@@ -45,6 +50,28 @@ bool modelSliders(TreeModel& model) {
     i = end;
   }
   return edited;
+}
+
+void fileButtons(std::string& path, std::string& status, const std::function<void(const std::string&)>& save,
+                 const std::function<void(const std::string&)>& exportMesh) {
+  char text[512];
+  std::snprintf(text, sizeof text, "%s", path.c_str());
+  if (ImGui::InputText("save to", text, sizeof text)) path = text;
+  const auto attempt = [&](bool model) {
+    try {
+      cli::requireOutputFile(path, "file");
+      if (model && !endsWith(path, ".json")) throw InputError(path, "file", "a model is saved as .json");
+      if (!model && !cli::isMeshFile(path)) throw InputError(path, "file", "a mesh is exported as .obj, .gltf or .glb");
+      (model ? save : exportMesh)(path);
+      status = "wrote " + path;
+    } catch (const std::exception& e) {
+      status = e.what();
+    }
+  };
+  if (ImGui::Button("save model (.json)")) attempt(true);
+  ImGui::SameLine();
+  if (ImGui::Button("export mesh (.obj .gltf .glb)")) attempt(false);
+  if (!status.empty()) ImGui::TextWrapped("%s", status.c_str());
 }
 
 void drawPanel(ViewState& state, const render::ForestFrame& frame, const render::FrameStats& stats, const std::string& device,

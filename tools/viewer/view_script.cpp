@@ -68,6 +68,8 @@ constexpr EventAction kActions[] = {
     {"restore", Argument::None, false, 0, 0, false, false},
     {"fullscreen", Argument::None, false, 0, 0, false, false},
     {"regenerate", Argument::None},
+    {"save", Argument::File},
+    {"export", Argument::File},
     {"open", Argument::File},
     {"grow", Argument::None},
     {"pause", Argument::None},
@@ -132,7 +134,7 @@ bool readArguments(const EventAction& action, const std::string& argument, Windo
 std::vector<WindowEvent> parseEvents(const std::string& text) {
   const std::string allowed =
       "expected FRAME:ACTION[=ARGUMENTS] with frames from 1 to 1000000 and ACTION one of resize=WxH (1 to 8192), minimise, restore, "
-      "fullscreen, regenerate, open=FILE, grow, pause, step=NODES, finish, rewind=AGE, reset, "
+      "fullscreen, regenerate, save=FILE.json, export=FILE.obj|.gltf|.glb, open=FILE, grow, pause, step=NODES, finish, rewind=AGE, reset, "
       "add-cloud=SHAPE/X/Y/Z/SX/SY/SZ[/POINTS/INFLUENCE/KILL], move-cloud=I/X/Y/Z, resize-cloud=I/SX/SY/SZ, remove-cloud=I, "
       "add-obstacle=box|sphere/X/Y/Z/SX/SY/SZ, move-obstacle=I/X/Y/Z, resize-obstacle=I/SX/SY/SZ, remove-obstacle=I "
       "(numbers finite, at most 1e6 in size; indices and counts whole)";

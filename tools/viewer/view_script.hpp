@@ -20,12 +20,12 @@ struct WindowEvent {
   int frame = 0;
   std::string action;           // one of eventActions() (the window's, the forest's, the modeller's)
   int width = 0, height = 0;    // resize
-  std::string text;             // open: the model file; add-cloud, add-obstacle: the shape
+  std::string text;             // open, save, export: the file; add-cloud, add-obstacle: the shape
   std::vector<double> numbers;  // the action's numbers in order (an index first where it names one)
 };
 
 // "FRAME:ACTION[=ARGUMENTS],..." (frames from 1); the actions and their arguments as `arbor view --help` lists
-// them: resize=WxH, minimise, restore, fullscreen, regenerate, open=FILE, grow, pause, step=NODES, finish,
+// them: resize=WxH, minimise, restore, fullscreen, regenerate, save=FILE, export=FILE, open=FILE, grow, pause, step=NODES, finish,
 // rewind=AGE, reset, add-cloud=SHAPE/X/Y/Z/SX/SY/SZ[/POINTS/INFLUENCE/KILL], move-cloud=I/X/Y/Z,
 // resize-cloud=I/SX/SY/SZ, remove-cloud=I, add-obstacle=box|sphere/X/Y/Z/SX/SY/SZ, move-obstacle=I/X/Y/Z,
 // resize-obstacle=I/SX/SY/SZ, remove-obstacle=I. InputError naming --events and the item otherwise.
