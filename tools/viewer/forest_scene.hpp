@@ -23,7 +23,7 @@ class ForestScene final : public ViewerScene {
   bool handle(const WindowEvent& event) override;
   void update(render::TreeRenderer& renderer) override;
   void panel(ViewState& state) override;
-  void drawLines(VkCommandBuffer, render::TreeRenderer&) const override {}
+  void drawLines(VkCommandBuffer, render::TreeRenderer&) override {}
   std::string status() const override { return ""; }
 
  private:

@@ -307,8 +307,8 @@ void GrowthScene::rebuildLines() {
   std::memcpy(lines_.mapped(), lines.data(), bytes);
 }
 
-void GrowthScene::drawLines(VkCommandBuffer cmd, render::TreeRenderer& renderer) const {
-  if (linesChanged_) const_cast<GrowthScene*>(this)->rebuildLines();  // the panel toggles them between updates
+void GrowthScene::drawLines(VkCommandBuffer cmd, render::TreeRenderer& renderer) {
+  if (linesChanged_) rebuildLines();  // the panel toggles them between updates
   // The lines are in the model's coordinates; the tree stands sunk by its planting depth like every tree.
   renderer.drawLines(cmd, lines_.handle(), lineCount_, render::plantedModel(forest_->trees().front().detail[0]));
 }

@@ -38,7 +38,7 @@ class GrowthScene final : public ViewerScene {
   bool handle(const WindowEvent& event) override;
   void update(render::TreeRenderer& renderer) override;
   void panel(ViewState& state) override;
-  void drawLines(VkCommandBuffer cmd, render::TreeRenderer& renderer) const override;
+  void drawLines(VkCommandBuffer cmd, render::TreeRenderer& renderer) override;
   std::string status() const override;
 
  private:

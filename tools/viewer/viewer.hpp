@@ -41,7 +41,7 @@ class ViewerScene {
   // Inside the panel's window, after the render settings.
   virtual void panel(ViewState& state) = 0;
   // Inside the render pass, after the trees: the scene's own lines.
-  virtual void drawLines(VkCommandBuffer cmd, render::TreeRenderer& renderer) const = 0;
+  virtual void drawLines(VkCommandBuffer cmd, render::TreeRenderer& renderer) = 0;
   // Appended to each scripted frame's log line ("" for none).
   virtual std::string status() const = 0;
 };
