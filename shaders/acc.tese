@@ -9,10 +9,7 @@ layout(quads, equal_spacing, ccw) in;
 #include "scene.glsl"
 #include "bark.glsl"
 
-layout(location = 0) in vec3 bezierPosition[];
-layout(location = 1) in vec4 bezierUvwRadius[];
-layout(location = 2) patch in vec3 cornerNormal[4];
-layout(location = 6) patch in vec3 cornerUvw[4];
+layout(location = 0) patch in uint patchIndex;
 
 layout(location = 0) out vec3 worldPosition;
 layout(location = 1) out vec3 worldNormal;
@@ -20,7 +17,7 @@ layout(location = 2) out vec3 uvw;
 layout(location = 3) out float radius;
 
 // Test hook: the evaluated points before and after displacement, with their patch and (u, v).
-layout(set = 0, binding = 6, std430) buffer Capture {
+layout(set = 0, binding = ARBOR_BINDING_CAPTURE, std430) buffer Capture {
   uint count;
   uint capacity;
   uint pad0, pad1;
@@ -35,7 +32,18 @@ void bernstein(float t, out vec4 b, out vec4 d) {
   d = vec4(-3.0 * s * s, 3.0 * s * s - 6.0 * s * t, 6.0 * s * t - 3.0 * t * t, 3.0 * t * t);
 }
 
+// The patch's record in the control buffer (interface.h): Bezier points with radius, their (u, v, w), corner
+// limit normals (zero for a fallback patch), the cage corners' (u, v, w).
+uint base;
+vec3 bezierPosition(int i) { return control[base + uint(i)].xyz; }
+
 void main() {
+  base = patchIndex * uint(ARBOR_ACC_CONTROL_VEC4S);
+  vec3 cornerNormal[4], cornerUvw[4];
+  for (int i = 0; i < 4; ++i) {
+    cornerNormal[i] = control[base + 32u + uint(i)].xyz;
+    cornerUvw[i] = control[base + 36u + uint(i)].xyz;
+  }
   float u = gl_TessCoord.x, v = gl_TessCoord.y;
   vec4 bu, du, bv, dv;
   bernstein(u, bu, du);
@@ -44,11 +52,12 @@ void main() {
   vec4 a = vec4(0.0);
   for (int row = 0; row < 4; ++row) {
     for (int column = 0; column < 4; ++column) {
-      vec3 b = bezierPosition[row * 4 + column];
+      vec4 b4 = control[base + uint(row * 4 + column)];
+      vec3 b = b4.xyz;
       p += bv[row] * bu[column] * b;
       pu += bv[row] * du[column] * b;
       pv += dv[row] * bu[column] * b;
-      a += bv[row] * bu[column] * bezierUvwRadius[row * 4 + column];
+      a += bv[row] * bu[column] * vec4(control[base + 16u + uint(row * 4 + column)].xyz, b4.w);
     }
   }
 
@@ -59,10 +68,10 @@ void main() {
   float w[4] = float[4](bu.x * bv.x, bu.w * bv.x, bu.w * bv.w, bu.x * bv.w);
   if (any(notEqual(cornerNormal[0], vec3(0.0)))) {  // fallback patches have no corner normals
     vec3 geometryAt[4] = vec3[4](
-        safeNormalize(cross(bezierPosition[1] - bezierPosition[0], bezierPosition[4] - bezierPosition[0])),
-        safeNormalize(cross(bezierPosition[3] - bezierPosition[2], bezierPosition[7] - bezierPosition[3])),
-        safeNormalize(cross(bezierPosition[15] - bezierPosition[14], bezierPosition[15] - bezierPosition[11])),
-        safeNormalize(cross(bezierPosition[13] - bezierPosition[12], bezierPosition[12] - bezierPosition[8])));
+        safeNormalize(cross(bezierPosition(1) - bezierPosition(0), bezierPosition(4) - bezierPosition(0))),
+        safeNormalize(cross(bezierPosition(3) - bezierPosition(2), bezierPosition(7) - bezierPosition(3))),
+        safeNormalize(cross(bezierPosition(15) - bezierPosition(14), bezierPosition(15) - bezierPosition(11))),
+        safeNormalize(cross(bezierPosition(13) - bezierPosition(12), bezierPosition(12) - bezierPosition(8))));
     for (int i = 0; i < 4; ++i) n += w[i] * (cornerNormal[i] - geometryAt[i]);
   }
   n = safeNormalize(n);
@@ -86,7 +95,7 @@ void main() {
   if (scene.flags.x != 0u) {
     uint slot = atomicAdd(capture.count, 1u);
     if (slot < capture.capacity) {
-      capture.entries[3u * slot] = vec4(float(uint(gl_PrimitiveID) + draw.patchBase), u, v, uvw.x);
+      capture.entries[3u * slot] = vec4(float(patchIndex), u, v, uvw.x);
       capture.entries[3u * slot + 1u] = vec4(onPatch, uvw.y);
       capture.entries[3u * slot + 2u] = vec4(p, uvw.z);
     }

@@ -1,6 +1,7 @@
 #include "gpu_tree.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <random>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -104,6 +105,8 @@ GpuTree uploadTree(const vk::VulkanContext& context, const QuadMesh& mesh, const
   }
   tree.bytes = tree.vertices.size() + tree.farVertices.size() + tree.indices.size() + tree.patches.size() + tree.points.size() + tree.leaves.size() +
                tree.impostors.size();
+  static std::atomic<std::uint64_t> uploads{0};
+  tree.id = ++uploads;
   tree.bounds = meshBounds(mesh);
   // Planted so that the limit surface is at full width at the ground: the closed base's corners (limit
   // positions) are pulled up and in, and the rounding reaches about half a radius above them.

@@ -3,12 +3,11 @@
 #include <array>
 #include <vector>
 
-#include "spirv_acc_tesc.h"
-#include "spirv_acc_tese.h"
-#include "spirv_acc_vert.h"
+#include "spirv_draw_commands_comp.h"
+#include "spirv_patch_cull_comp.h"
+#include "spirv_patch_vert.h"
 #include "spirv_line_frag.h"
 #include "spirv_line_vert.h"
-#include "spirv_flat_vert.h"
 #include "spirv_ground_frag.h"
 #include "spirv_ground_vert.h"
 #include "spirv_leaf_frag.h"
@@ -19,23 +18,11 @@
 #include "spirv_ceiling_frag.h"
 #include "spirv_impostor_geom.h"
 #include "spirv_impostor_frag.h"
-#include "spirv_pn_tesc.h"
-#include "spirv_pn_tese.h"
-#include "spirv_pn_vert.h"
 #include "spirv_sky_frag.h"
 #include "spirv_sky_vert.h"
 #include "spirv_tree_frag.h"
 
 namespace arbor::render {
-
-const char* renderModeName(RenderMode mode) {
-  switch (mode) {
-    case RenderMode::Flat: return "flat";
-    case RenderMode::PN: return "pn";
-    case RenderMode::ACC: return "acc";
-  }
-  return "acc";
-}
 
 namespace {
 
@@ -49,6 +36,8 @@ template <std::size_t N>
 Stage stage(VkShaderStageFlagBits s, const std::uint32_t (&code)[N]) {
   return Stage{s, code, sizeof(code)};
 }
+
+Stage stage(VkShaderStageFlagBits s, const SpirvCode& code) { return Stage{s, code.words, code.bytes}; }
 
 struct PipelineSpec {
   std::vector<Stage> stages;
@@ -160,15 +149,55 @@ VkPipeline build(VkDevice device, VkRenderPass renderPass, VkPipelineLayout layo
   return pipeline;
 }
 
+VkPipeline buildCompute(VkDevice device, VkPipelineLayout layout, const Stage& s) {
+  const VkShaderModule m = module(device, s);
+  VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
+  info.stage = VkPipelineShaderStageCreateInfo{VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
+  info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
+  info.stage.module = m;
+  info.stage.pName = "main";
+  info.layout = layout;
+  VkPipeline pipeline = VK_NULL_HANDLE;
+  const VkResult result = vkCreateComputePipelines(device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline);
+  vkDestroyShaderModule(device, m, nullptr);
+  vk::check(result, "vkCreateComputePipelines");
+  return pipeline;
+}
+
+// The compute passes' set: the scene, a tree's buffers, the control points and this frame's lists.
+void createComputeLayouts(VkDevice device, Pipelines& p) {
+  std::array<VkDescriptorSetLayoutBinding, ARBOR_COMPUTE_BINDINGS> bindings{};
+  for (std::uint32_t b = 0; b < bindings.size(); ++b) {
+    bindings[b] = {b, b == ARBOR_COMPUTE_SCENE ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1,
+                   VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
+  }
+  VkDescriptorSetLayoutCreateInfo setInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+  setInfo.bindingCount = static_cast<std::uint32_t>(bindings.size());
+  setInfo.pBindings = bindings.data();
+  vk::check(vkCreateDescriptorSetLayout(device, &setInfo, nullptr, &p.computeSetLayout), "vkCreateDescriptorSetLayout");
+  const VkPushConstantRange push{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(PassConstants)};
+  VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+  layoutInfo.setLayoutCount = 1;
+  layoutInfo.pSetLayouts = &p.computeSetLayout;
+  layoutInfo.pushConstantRangeCount = 1;
+  layoutInfo.pPushConstantRanges = &push;
+  vk::check(vkCreatePipelineLayout(device, &layoutInfo, nullptr, &p.computeLayout), "vkCreatePipelineLayout");
+}
+
 }  // namespace
 
 void Pipelines::destroy(VkDevice device) {
-  for (VkPipeline p : {sky, ground, tree[0], tree[1], tree[2], wireframe[0], wireframe[1], wireframe[2], twoSided[0],
-                       twoSided[1], twoSided[2], leaves, impostors, ceiling, lines}) {
+  std::vector<VkPipeline> all{sky, ground, leaves, impostors, ceiling, lines, cull, drawCommands};
+  for (const ModePipelines& m : modes) all.insert(all.end(), {m.fill, m.wireframe, m.twoSided, m.build});
+  for (VkPipeline p : all) {
     if (p) vkDestroyPipeline(device, p, nullptr);
   }
-  if (layout) vkDestroyPipelineLayout(device, layout, nullptr);
-  if (setLayout) vkDestroyDescriptorSetLayout(device, setLayout, nullptr);
+  for (VkPipelineLayout l : {layout, computeLayout}) {
+    if (l) vkDestroyPipelineLayout(device, l, nullptr);
+  }
+  for (VkDescriptorSetLayout l : {setLayout, computeSetLayout}) {
+    if (l) vkDestroyDescriptorSetLayout(device, l, nullptr);
+  }
   *this = Pipelines{};
 }
 
@@ -182,20 +211,18 @@ Pipelines createPipelines(const vk::VulkanContext& context, VkRenderPass renderP
   p.pushStages = all;
   // Each binding reaches only the stages that read it: every extra stage costs lavapipe work on each of the
   // thousands of split tessellation draws (adaptive ACC went from 1.4 to 2.1 s with two bindings for all).
-  const VkShaderStageFlags control = VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT;  // the stage that fetches vertices
+  const VkShaderStageFlags evaluation = VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT;
   const VkShaderStageFlags pointStages = geometry ? VkShaderStageFlags{VK_SHADER_STAGE_GEOMETRY_BIT} : VkShaderStageFlags{VK_SHADER_STAGE_VERTEX_BIT};
-  const std::array<VkDescriptorSetLayoutBinding, 11> bindings{{
-      {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, all, nullptr},
-      {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, control, nullptr},
-      {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, control, nullptr},
-      {3, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, control, nullptr},
-      {4, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
-      {5, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
-      {6, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, nullptr},
-      {7, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, nullptr},
-      {8, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, pointStages, nullptr},
-      {9, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
-      {10, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, pointStages, nullptr},
+  const std::array<VkDescriptorSetLayoutBinding, 9> bindings{{
+      {ARBOR_BINDING_SCENE, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, all, nullptr},
+      {ARBOR_BINDING_BARK_COLOR, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
+      {ARBOR_BINDING_BARK_HEIGHT, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, evaluation | VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
+      {ARBOR_BINDING_CAPTURE, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, evaluation, nullptr},
+      {ARBOR_BINDING_LEAVES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, pointStages, nullptr},
+      {ARBOR_BINDING_LEAF_ATLAS, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
+      {ARBOR_BINDING_IMPOSTORS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, pointStages, nullptr},
+      {ARBOR_BINDING_CONTROL, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, evaluation, nullptr},
+      {ARBOR_BINDING_VISIBLE, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT, nullptr},
   }};
   VkDescriptorSetLayoutCreateInfo setInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
   setInfo.bindingCount = static_cast<std::uint32_t>(bindings.size());
@@ -218,35 +245,39 @@ Pipelines createPipelines(const vk::VulkanContext& context, VkRenderPass renderP
   p.ground = build(device, renderPass, p.layout, samples, ground);
 
   const auto treeFrag = stage(VK_SHADER_STAGE_FRAGMENT_BIT, spirv_tree_frag);
-  PipelineSpec flat{{stage(VK_SHADER_STAGE_VERTEX_BIT, spirv_flat_vert), treeFrag}};
-  flat.treeVertices = true;
-  PipelineSpec pn{{stage(VK_SHADER_STAGE_VERTEX_BIT, spirv_pn_vert), stage(VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, spirv_pn_tesc),
-                   stage(VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, spirv_pn_tese), treeFrag}};
-  pn.patchPoints = 3;  // the vertex stage fetches its triangle's corners from the index buffer
-  PipelineSpec acc{{stage(VK_SHADER_STAGE_VERTEX_BIT, spirv_acc_vert), stage(VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, spirv_acc_tesc),
-                    stage(VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, spirv_acc_tese), treeFrag}};
-  acc.patchPoints = 4;  // the quad's corners; the 1-ring comes from the points buffer
-  PipelineSpec ceiling{{stage(VK_SHADER_STAGE_VERTEX_BIT, spirv_acc_vert), stage(VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, spirv_ceiling_tesc),
+  PipelineSpec ceiling{{stage(VK_SHADER_STAGE_VERTEX_BIT, spirv_patch_vert), stage(VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, spirv_ceiling_tesc),
                         stage(VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, spirv_ceiling_tese),
                         stage(VK_SHADER_STAGE_FRAGMENT_BIT, spirv_ceiling_frag)}};
-  ceiling.patchPoints = 4;
+  ceiling.patchPoints = 1;
   p.ceiling = build(device, renderPass, p.layout, samples, ceiling);
   PipelineSpec lines{{stage(VK_SHADER_STAGE_VERTEX_BIT, spirv_line_vert), stage(VK_SHADER_STAGE_FRAGMENT_BIT, spirv_line_frag)}};
   lines.topology = VK_PRIMITIVE_TOPOLOGY_LINE_LIST;
   lines.lineVertices = true;
   lines.cullBack = false;
   p.lines = build(device, renderPass, p.layout, samples, lines);
-  const PipelineSpec* specs[3] = {&flat, &pn, &acc};
-  for (int m = 0; m < 3; ++m) {
-    p.tree[m] = build(device, renderPass, p.layout, samples, *specs[m]);
-    PipelineSpec twoSided = *specs[m];
+  createComputeLayouts(device, p);
+  p.cull = buildCompute(device, p.computeLayout, stage(VK_SHADER_STAGE_COMPUTE_BIT, spirv_patch_cull_comp));
+  p.drawCommands = buildCompute(device, p.computeLayout, stage(VK_SHADER_STAGE_COMPUTE_BIT, spirv_draw_commands_comp));
+  for (const RenderModeInfo& info : renderModes()) {
+    ModePipelines& m = p.modes[static_cast<std::size_t>(info.mode)];
+    PipelineSpec spec{{stage(VK_SHADER_STAGE_VERTEX_BIT, info.vertex), treeFrag}};
+    if (info.primitive == PatchPrimitive::None) {
+      spec.treeVertices = true;
+    } else {
+      spec.stages.insert(spec.stages.begin() + 1, {stage(VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, info.control),
+                                                   stage(VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, info.evaluation)});
+      spec.patchPoints = 1;  // the patch's entry in this frame's list; its points come from the control buffer
+      m.build = buildCompute(device, p.computeLayout, stage(VK_SHADER_STAGE_COMPUTE_BIT, info.build));
+    }
+    m.fill = build(device, renderPass, p.layout, samples, spec);
+    PipelineSpec twoSided = spec;
     twoSided.cullBack = false;
-    p.twoSided[m] = build(device, renderPass, p.layout, samples, twoSided);
+    m.twoSided = build(device, renderPass, p.layout, samples, twoSided);
     if (context.features().fillModeNonSolid) {
-      PipelineSpec wire = *specs[m];
+      PipelineSpec wire = spec;
       wire.wireframe = true;
       wire.cullBack = false;
-      p.wireframe[m] = build(device, renderPass, p.layout, samples, wire);
+      m.wireframe = build(device, renderPass, p.layout, samples, wire);
     }
   }
   if (geometry) {

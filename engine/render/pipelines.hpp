@@ -1,20 +1,30 @@
 #pragma once
-// The graphics pipelines: sky, ground, the tree in three modes (flat, PN-triangles, ACC), each also as
-// wireframe, and coloured lines; one descriptor set layout and pipeline layout shared by all.
+// The pipelines: sky, ground, the tree in every render mode (render_modes.hpp) filled, as wireframe and
+// two-sided, coloured lines; and the compute passes that build control points and cull, bucket and draw patches.
+// One descriptor set layout and pipeline layout for the graphics pipelines, one for the compute passes.
+#include <array>
+
+#include "interface.h"
+#include "render_modes.hpp"
 #include "vk/context.hpp"
 
 namespace arbor::render {
 
-enum class RenderMode { Flat, PN, ACC };
-const char* renderModeName(RenderMode mode);
+// One render mode's pipelines.
+struct ModePipelines {
+  VkPipeline fill = VK_NULL_HANDLE;
+  VkPipeline wireframe = VK_NULL_HANDLE;  // null where the device has no fillModeNonSolid
+  VkPipeline twoSided = VK_NULL_HANDLE;   // no culling: back faces seen through cracks show (crack tests)
+  VkPipeline build = VK_NULL_HANDLE;      // compute: control points once per mesh (tessellated modes)
+};
 
 struct Pipelines {
-  VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;
-  VkPipelineLayout layout = VK_NULL_HANDLE;
+  VkDescriptorSetLayout setLayout = VK_NULL_HANDLE, computeSetLayout = VK_NULL_HANDLE;
+  VkPipelineLayout layout = VK_NULL_HANDLE, computeLayout = VK_NULL_HANDLE;
   VkPipeline sky = VK_NULL_HANDLE, ground = VK_NULL_HANDLE;
-  VkPipeline tree[3] = {};       // by RenderMode
-  VkPipeline wireframe[3] = {};  // null where the device has no fillModeNonSolid
-  VkPipeline twoSided[3] = {};   // no culling: back faces seen through cracks show (crack tests)
+  std::array<ModePipelines, kRenderModeCount> modes{};  // by RenderMode
+  VkPipeline cull = VK_NULL_HANDLE;          // per frame: cull, set factors, bucket (patch_cull.comp)
+  VkPipeline drawCommands = VK_NULL_HANDLE;  // per frame: buckets -> indirect draws (draw_commands.comp)
   VkPipeline leaves = VK_NULL_HANDLE;     // null where the device has no geometry shaders
   VkPipeline impostors = VK_NULL_HANDLE;  // fake branches; null likewise
   VkPipeline ceiling = VK_NULL_HANDLE;    // ACC's patches with trivial stages (bench tess)
@@ -24,13 +34,31 @@ struct Pipelines {
   void destroy(VkDevice device);
 };
 
-// Push constants: the tree's model matrix, the first patch of the draw, the tree's leaf count.
+// Push constants of the graphics pipelines: the tree's model matrix and leaf count (scene.glsl's Draw).
 struct DrawConstants {
   float model[16];
-  std::uint32_t patchBase;
   std::uint32_t leafCount;
-  std::uint32_t pad[2];
+  std::uint32_t pad[3];
 };
+static_assert(sizeof(DrawConstants) == ARBOR_DRAW_CONSTANTS_BYTES, "scene.glsl's Draw block");
+
+// Push constants of the compute passes (compute.glsl's Pass block): one instance's slice of this frame's lists.
+struct PassConstants {
+  float model[16];
+  std::uint32_t primitiveCount;  // patches or triangles
+  std::uint32_t listBase;        // first entry of the instance's lists (bucket b at listBase + b * primitiveCount)
+  std::uint32_t counterBase;     // first of its ARBOR_BUCKETS + 1 counters
+  std::uint32_t commandBase;     // first of its draw commands
+  std::uint32_t flags;           // PassFlag bits
+  std::uint32_t maxCommands;
+  std::uint32_t pad[2];
+  std::uint32_t perDraw[8];      // patches per draw in each bucket
+};
+static_assert(sizeof(PassConstants) == ARBOR_PASS_CONSTANTS_BYTES, "compute.glsl's Pass block");
+static_assert(ARBOR_BUCKETS <= 8, "PassConstants::perDraw holds eight buckets");
+
+// compute.glsl's pass flags.
+enum PassFlag : std::uint32_t { kCullFrustum = 1, kCullBackFaces = 2, kBucketed = 4, kZeroFill = 8, kTriangles = 16 };
 
 // One end of a wireframe line: object-space position (w unused) and colour (a unused); 32 bytes.
 struct LineVertex {

@@ -24,7 +24,7 @@ FrameResult RenderSession::render(const Camera& camera, const RenderSettings& se
 FrameResult RenderSession::render(const Camera& camera, const RenderSettings& settings, const std::vector<TreeInstance>& instances) {
   const auto start = std::chrono::steady_clock::now();
   context_.submitAndWait([&](VkCommandBuffer cmd) {
-    renderer_.beginFrame(cmd, camera, target_.extent(), settings);
+    renderer_.beginFrame(cmd, camera, target_.extent(), settings, instances);
     std::array<VkClearValue, 3> clear{};
     clear[0].color = {{0.0f, 0.0f, 0.0f, 1.0f}};
     clear[1].depthStencil = {1.0f, 0};

@@ -33,13 +33,24 @@ struct SceneUniforms {
 constexpr std::uint32_t kCaptureHeader = 16;  // count, capacity, two words of padding
 constexpr std::uint32_t kCaptureEntryBytes = 48;  // three vec4: patch and (u, v), point, displaced point
 constexpr std::uint32_t kTimestampCount = 2;
-constexpr std::uint32_t kLavapipeInputVerticesPerDraw = 4096;  // beyond it lavapipe garbles patches
+constexpr std::uint32_t kLavapipeInputVerticesPerDraw = 4096;  // beyond it lavapipe garbles patches (one vertex each)
+constexpr std::uint32_t kCounters = ARBOR_BUCKETS + 1;           // per instance: one per bucket, then the draws
+
+std::uint32_t bit(bool on, PassFlag flag) { return on ? static_cast<std::uint32_t>(flag) : 0u; }
+
+// A pipeline barrier for buffer memory: what `from` wrote, `to` may read.
+void barrier(VkCommandBuffer cmd, VkPipelineStageFlags fromStage, VkAccessFlags from, VkPipelineStageFlags toStage, VkAccessFlags to) {
+  VkMemoryBarrier b{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+  b.srcAccessMask = from;
+  b.dstAccessMask = to;
+  vkCmdPipelineBarrier(cmd, fromStage, toStage, 0, 1, &b, 0, nullptr, 0, nullptr);
+}
 
 // Tessellated vertices one patch emits at `level` with equal spacing (which rounds levels up). A triangle is
 // tessellated as concentric rings of 3L, 3(L - 2), ... vertices, ending in a point (L even) or a triangle.
 std::uint32_t verticesPerPatch(RenderMode mode, float level) {
   const auto l = static_cast<std::uint32_t>(std::ceil(std::clamp(level, 1.0f, 64.0f)));
-  if (mode == RenderMode::ACC) return (l + 1) * (l + 1);
+  if (renderModeInfo(mode).primitive == PatchPrimitive::Quad) return (l + 1) * (l + 1);
   return l % 2 == 0 ? 1 + 3 * l * (l + 2) / 4 : 3 * ((l + 1) / 2) * ((l + 1) / 2);
 }
 
@@ -64,13 +75,23 @@ TreeRenderer::TreeRenderer(const vk::VulkanContext& context, VkRenderPass render
 
   const VkDevice device = context.device();
   const std::array<VkDescriptorPoolSize, 3> sizes{{{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kMaxTrees},
-                                                   {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 7 * kMaxTrees},
+                                                   {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 5 * kMaxTrees},
                                                    {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 3 * kMaxTrees}}};
   VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
   poolInfo.maxSets = kMaxTrees;
   poolInfo.poolSizeCount = static_cast<std::uint32_t>(sizes.size());
   poolInfo.pPoolSizes = sizes.data();
   vk::check(vkCreateDescriptorPool(device, &poolInfo, nullptr, &pool_), "vkCreateDescriptorPool");
+  // Compute sets come and go with the trees (one per distinct tree shown).
+  const std::array<VkDescriptorPoolSize, 2> computeSizes{{{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kMaxTrees},
+                                                          {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, (ARBOR_COMPUTE_BINDINGS - 1) * kMaxTrees}}};
+  VkDescriptorPoolCreateInfo computePoolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+  computePoolInfo.flags = VK_DESCRIPTOR_POOL_CREATE_FREE_DESCRIPTOR_SET_BIT;
+  computePoolInfo.maxSets = kMaxTrees;
+  computePoolInfo.poolSizeCount = static_cast<std::uint32_t>(computeSizes.size());
+  computePoolInfo.pPoolSizes = computeSizes.data();
+  vk::check(vkCreateDescriptorPool(device, &computePoolInfo, nullptr, &computePool_), "vkCreateDescriptorPool");
+  ensureFrameBuffers(1, kCounters, 1);
   setTree(nullptr);
 
   if (context.features().pipelineStatisticsQuery) {
@@ -94,6 +115,7 @@ TreeRenderer::~TreeRenderer() {
   if (statistics_) vkDestroyQueryPool(device, statistics_, nullptr);
   if (timestamps_) vkDestroyQueryPool(device, timestamps_, nullptr);
   vkDestroyDescriptorPool(device, pool_, nullptr);
+  vkDestroyDescriptorPool(device, computePool_, nullptr);
   vkDestroySampler(device, sampler_, nullptr);
   vkDestroySampler(device, leafSampler_, nullptr);
   pipelines_.destroy(device);
@@ -130,6 +152,18 @@ void TreeRenderer::setTrees(const std::vector<const GpuTree*>& trees) {
     throw std::runtime_error("a scene may hold at most " + std::to_string(kMaxTrees) + " distinct trees, not " + std::to_string(trees.size()));
   }
   trees_ = trees;
+  // Control points of trees no longer shown go (their GpuTree may be gone); the others stay built.
+  for (auto it = controls_.begin(); it != controls_.end();) {
+    const bool kept = std::any_of(trees.begin(), trees.end(), [&](const GpuTree* t) { return t && t->id == it->first; });
+    if (kept) {
+      it->second.boundMode = -1;  // the tree's graphics set is rewritten below
+      ++it;
+      continue;
+    }
+    vkDeviceWaitIdle(context_.device());  // a frame still in flight may read them
+    if (it->second.computeSet) vkFreeDescriptorSets(context_.device(), computePool_, 1, &it->second.computeSet);
+    it = controls_.erase(it);
+  }
   const std::size_t wanted = std::max<std::size_t>(1, trees.size());  // sky and ground need a set without trees too
   while (sets_.size() < wanted) {
     VkDescriptorSetAllocateInfo alloc{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
@@ -147,16 +181,15 @@ void TreeRenderer::writeSet(VkDescriptorSet set, const GpuTree* tree) {
   // Without a tree the storage bindings still point at a valid buffer: every binding is always written.
   const VkBuffer fallback = capture_.handle();
   const VkDescriptorBufferInfo sceneInfo{scene_.handle(), 0, VK_WHOLE_SIZE};
-  const VkDescriptorBufferInfo vertexInfo{tree ? tree->vertices.handle() : fallback, 0, VK_WHOLE_SIZE};
-  const VkDescriptorBufferInfo patchInfo{tree ? tree->patches.handle() : fallback, 0, VK_WHOLE_SIZE};
-  const VkDescriptorBufferInfo pointInfo{tree ? tree->points.handle() : fallback, 0, VK_WHOLE_SIZE};
-  const VkDescriptorBufferInfo indexInfo{tree ? tree->indices.handle() : fallback, 0, VK_WHOLE_SIZE};
   const VkDescriptorBufferInfo leafInfo{tree && tree->leafCount > 0 ? tree->leaves.handle() : fallback, 0, VK_WHOLE_SIZE};
   const VkDescriptorBufferInfo impostorInfo{tree && tree->impostorCount > 0 ? tree->impostors.handle() : fallback, 0, VK_WHOLE_SIZE};
   const VkDescriptorImageInfo atlasInfo{leafSampler_, leafAtlas_.view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
   const VkDescriptorBufferInfo captureInfo{capture_.handle(), 0, VK_WHOLE_SIZE};
   const VkDescriptorImageInfo colorInfo{sampler_, barkColor_.view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
   const VkDescriptorImageInfo heightInfo{sampler_, barkHeight_.view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+  // The control points are bound when a tessellated mode first draws the tree (bindControl).
+  const VkDescriptorBufferInfo controlInfo{fallback, 0, VK_WHOLE_SIZE};
+  const VkDescriptorBufferInfo visibleInfo{visible_.handle(), 0, VK_WHOLE_SIZE};
   auto write = [&](std::uint32_t binding, VkDescriptorType type, const VkDescriptorBufferInfo* b, const VkDescriptorImageInfo* i) {
     VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
     w.dstSet = set;
@@ -167,33 +200,149 @@ void TreeRenderer::writeSet(VkDescriptorSet set, const GpuTree* tree) {
     w.pImageInfo = i;
     return w;
   };
-  const std::array<VkWriteDescriptorSet, 11> writes{
-      write(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, &sceneInfo, nullptr),
-      write(1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &vertexInfo, nullptr),
-      write(2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &patchInfo, nullptr),
-      write(3, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &pointInfo, nullptr),
-      write(4, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, nullptr, &colorInfo),
-      write(5, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, nullptr, &heightInfo),
-      write(6, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &captureInfo, nullptr),
-      write(7, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &indexInfo, nullptr),
-      write(8, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &leafInfo, nullptr),
-      write(9, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, nullptr, &atlasInfo),
-      write(10, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &impostorInfo, nullptr)};
+  const std::array<VkWriteDescriptorSet, 9> writes{
+      write(ARBOR_BINDING_SCENE, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, &sceneInfo, nullptr),
+      write(ARBOR_BINDING_BARK_COLOR, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, nullptr, &colorInfo),
+      write(ARBOR_BINDING_BARK_HEIGHT, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, nullptr, &heightInfo),
+      write(ARBOR_BINDING_CAPTURE, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &captureInfo, nullptr),
+      write(ARBOR_BINDING_LEAVES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &leafInfo, nullptr),
+      write(ARBOR_BINDING_LEAF_ATLAS, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, nullptr, &atlasInfo),
+      write(ARBOR_BINDING_IMPOSTORS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &impostorInfo, nullptr),
+      write(ARBOR_BINDING_CONTROL, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &controlInfo, nullptr),
+      write(ARBOR_BINDING_VISIBLE, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &visibleInfo, nullptr)};
   vkUpdateDescriptorSets(context_.device(), static_cast<std::uint32_t>(writes.size()), writes.data(), 0, nullptr);
 }
 
-std::uint32_t TreeRenderer::primitivesPerDraw(const RenderSettings& settings) const {
-  if (settings.patchesPerDraw > 0) return settings.patchesPerDraw;
-  if (settings.mode == RenderMode::Flat || !context_.isLavapipe()) return 1u << 30;
-  const float level = settings.adaptivePixels > 0.0f ? settings.maxLevel : settings.tessLevel;
-  // Two lavapipe limits, both measured on Mesa 22.3.6 (docs/rendering.md): 65535 tessellated vertices per
-  // draw, and 4096 input vertices per non-indexed tessellated draw, whatever the factor.
-  const std::uint32_t byOutput = std::max(1u, 65535u / verticesPerPatch(settings.mode, level));
-  const std::uint32_t byInput = kLavapipeInputVerticesPerDraw / (settings.mode == RenderMode::ACC ? 4u : 3u);
-  return std::min(byOutput, byInput);
+void TreeRenderer::ensureFrameBuffers(std::size_t entries, std::size_t counters, std::size_t commands) {
+  const auto fits = [](const vk::Buffer& b, std::size_t bytes) { return b.handle() != VK_NULL_HANDLE && b.size() >= bytes; };
+  const std::size_t entryBytes = entries * 2 * sizeof(std::uint32_t), counterBytes = counters * sizeof(std::uint32_t);
+  const std::size_t commandBytes = commands * ARBOR_DRAW_COMMAND_BYTES;
+  const bool hostVisible = inspect_ == (visible_.mapped() != nullptr);
+  if (fits(visible_, entryBytes) && fits(counts_, counterBytes) && fits(commands_, commandBytes) && hostVisible) return;
+  vkDeviceWaitIdle(context_.device());  // the previous frame may still read them
+  // Half again what is asked, so that a growing forest does not reallocate every frame.
+  const auto grown = [](std::size_t bytes) { return std::max<std::size_t>(256, bytes + bytes / 2); };
+  const VkMemoryPropertyFlags memory = inspect_ ? VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT
+                                                : VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT;
+  const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+  if (!fits(visible_, entryBytes) || !hostVisible) visible_ = vk::Buffer(context_, grown(entryBytes), storage, memory);
+  if (!fits(commands_, commandBytes) || !hostVisible) {
+    commands_ = vk::Buffer(context_, grown(commandBytes), storage | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, memory);
+  }
+  if (!fits(counts_, counterBytes)) {
+    counts_ = vk::Buffer(context_, grown(counterBytes), storage | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT |
+                                                            VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                         VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+    countsReadback_ = vk::hostBuffer(context_, counts_.size(), VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+  }
+  ++frameGeneration_;
+  if (!sets_.empty()) {
+    for (std::size_t i = 0; i < sets_.size(); ++i) writeSet(sets_[i], i < trees_.size() ? trees_[i] : nullptr);
+    for (auto& [id, control] : controls_) control.boundMode = -1;
+  }
 }
 
-void TreeRenderer::beginFrame(VkCommandBuffer cmd, const Camera& camera, VkExtent2D extent, const RenderSettings& s) {
+void TreeRenderer::setInspection(bool on) {
+  inspect_ = on;
+  ensureFrameBuffers(visible_.size() / 8, counts_.size() / 4, commands_.size() / ARBOR_DRAW_COMMAND_BYTES);
+}
+
+std::vector<PatchDraw> TreeRenderer::inspectDraws() const {
+  std::vector<PatchDraw> draws;
+  if (!inspect_) throw std::logic_error("inspectDraws needs setInspection(true) before the frame");
+  const auto* counts = static_cast<const std::uint32_t*>(countsReadback_.mapped());
+  const auto* commands = static_cast<const std::uint32_t*>(commands_.mapped());
+  const auto* entries = static_cast<const std::uint32_t*>(visible_.mapped());
+  for (std::size_t i = 0; i < planOf_.size(); ++i) {
+    if (planOf_[i] < 0) continue;
+    const InstancePlan& plan = plans_[static_cast<std::size_t>(planOf_[i])];
+    const std::uint32_t written = counts[plan.counterBase + ARBOR_BUCKETS];
+    for (std::uint32_t c = 0; c < written; ++c) {
+      const std::uint32_t* command = commands + 4 * (plan.commandBase + c);
+      PatchDraw draw;
+      draw.instance = static_cast<std::uint32_t>(i);
+      for (std::uint32_t k = 0; k < command[0]; ++k) {
+        const std::uint32_t* entry = entries + 2 * (command[2] + k);
+        draw.patches.push_back({entry[0], {entry[1] & 0xffu, (entry[1] >> 8) & 0xffu, (entry[1] >> 16) & 0xffu, entry[1] >> 24}});
+      }
+      draws.push_back(std::move(draw));
+    }
+  }
+  return draws;
+}
+
+TreeRenderer::DrawSizes TreeRenderer::drawSizes(const RenderSettings& settings) const {
+  DrawSizes sizes;
+  sizes.perDraw.fill(1u << 30);
+  if (settings.patchesPerDraw > 0) {
+    sizes.perDraw[0] = settings.patchesPerDraw;
+    return sizes;
+  }
+  if (!context_.isLavapipe() || !isTessellated(settings.mode)) return sizes;
+  // Two lavapipe limits, both measured on Mesa 22.3.6 (docs/rendering.md): 65535 tessellated vertices per
+  // draw, and 4096 input vertices (here patches) per tessellated draw, whatever the factor.
+  const auto perDraw = [&](float level) {
+    return std::max(1u, std::min(kLavapipeInputVerticesPerDraw, 65535u / verticesPerPatch(settings.mode, level)));
+  };
+  if (settings.adaptivePixels <= 0.0f || settings.ceiling) {
+    sizes.perDraw[0] = perDraw(settings.tessLevel);  // one factor: one bucket sized for it
+  } else if (!settings.bucketed) {
+    sizes.perDraw[0] = perDraw(settings.maxLevel);  // every draw sized for the largest factor allowed
+  } else {
+    sizes.buckets = ARBOR_BUCKETS;
+    for (std::uint32_t b = 0; b < sizes.buckets; ++b) sizes.perDraw[b] = perDraw(static_cast<float>(1u << b));
+  }
+  return sizes;
+}
+
+bool TreeRenderer::drawnTessellated(const TreeInstance& instance, const RenderSettings& s) const {
+  const GpuTree& tree = *trees_[instance.tree];
+  const bool far = instance.far && tree.farVertices.handle() != VK_NULL_HANDLE && !s.ceiling;
+  return isTessellated(s.mode) && !far && (renderModeInfo(s.mode).primitive == PatchPrimitive::Quad ? tree.patchCount : tree.triangles) > 0;
+}
+
+void TreeRenderer::bindControl(std::uint32_t treeIndex, RenderMode mode) {
+  const GpuTree& tree = *trees_[treeIndex];
+  TreeControl& c = controls_[tree.id];
+  const auto m = static_cast<std::size_t>(mode);
+  if (c.boundMode == static_cast<int>(mode) && c.boundFrame == frameGeneration_) return;
+  if (!c.computeSet) {
+    VkDescriptorSetAllocateInfo alloc{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+    alloc.descriptorPool = computePool_;
+    alloc.descriptorSetCount = 1;
+    alloc.pSetLayouts = &pipelines_.computeSetLayout;
+    vk::check(vkAllocateDescriptorSets(context_.device(), &alloc, &c.computeSet), "vkAllocateDescriptorSets");
+  }
+  const std::array<VkBuffer, ARBOR_COMPUTE_BINDINGS> buffers{
+      scene_.handle(), tree.vertices.handle(), tree.patches.handle(), tree.points.handle(), tree.indices.handle(),
+      c.control[m].handle(), c.hulls[m].handle(), visible_.handle(), counts_.handle(), commands_.handle()};
+  std::array<VkDescriptorBufferInfo, ARBOR_COMPUTE_BINDINGS> infos{};
+  std::array<VkWriteDescriptorSet, ARBOR_COMPUTE_BINDINGS + 1> writes{};
+  for (std::uint32_t b = 0; b < ARBOR_COMPUTE_BINDINGS; ++b) {
+    infos[b] = {buffers[b], 0, VK_WHOLE_SIZE};
+    writes[b] = VkWriteDescriptorSet{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+    writes[b].dstSet = c.computeSet;
+    writes[b].dstBinding = b;
+    writes[b].descriptorCount = 1;
+    writes[b].descriptorType = b == ARBOR_COMPUTE_SCENE ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    writes[b].pBufferInfo = &infos[b];
+  }
+  // The tree's graphics set reads the same control points.
+  const VkDescriptorBufferInfo controlInfo{c.control[m].handle(), 0, VK_WHOLE_SIZE};
+  VkWriteDescriptorSet& graphics = writes[ARBOR_COMPUTE_BINDINGS];
+  graphics = VkWriteDescriptorSet{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+  graphics.dstSet = sets_[treeIndex];
+  graphics.dstBinding = ARBOR_BINDING_CONTROL;
+  graphics.descriptorCount = 1;
+  graphics.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+  graphics.pBufferInfo = &controlInfo;
+  vkUpdateDescriptorSets(context_.device(), static_cast<std::uint32_t>(writes.size()), writes.data(), 0, nullptr);
+  c.boundMode = static_cast<int>(mode);
+  c.boundFrame = frameGeneration_;
+}
+
+void TreeRenderer::beginFrame(VkCommandBuffer cmd, const Camera& camera, VkExtent2D extent, const RenderSettings& s,
+                              const std::vector<TreeInstance>& instances) {
   const float aspect = static_cast<float>(extent.width) / static_cast<float>(std::max(1u, extent.height));
   SceneUniforms u{};
   u.view = viewMatrix(camera);
@@ -204,7 +353,8 @@ void TreeRenderer::beginFrame(VkCommandBuffer cmd, const Camera& camera, VkExten
   u.lightDir = glm::vec4(glm::normalize(s.lightDirection), s.lightIntensity);
   u.viewport = glm::vec4(static_cast<float>(extent.width), static_cast<float>(extent.height), 1.0f / static_cast<float>(extent.width),
                          1.0f / static_cast<float>(extent.height));
-  u.tess = glm::vec4(std::clamp(s.tessLevel, 1.0f, 64.0f), s.adaptivePixels, std::clamp(s.maxLevel, 1.0f, 64.0f), s.cull ? 1.0f : 0.0f);
+  u.tess = glm::vec4(std::clamp(s.tessLevel, 1.0f, 64.0f), s.ceiling ? 0.0f : s.adaptivePixels, std::clamp(s.maxLevel, 1.0f, 64.0f),
+                     s.cull ? 1.0f : 0.0f);
   u.displace = glm::vec4(s.displacement, s.displacementBias, s.seamFade, s.textureRepeat);
   u.skyTop = glm::vec4(0.32f, 0.52f, 0.82f, 1.0f);
   u.skyHorizon = glm::vec4(0.78f, 0.85f, 0.92f, 1.0f);
@@ -221,6 +371,105 @@ void TreeRenderer::beginFrame(VkCommandBuffer cmd, const Camera& camera, VkExten
   if (captureCapacity_ > 0) static_cast<std::uint32_t*>(capture_.mapped())[0] = 0;
   if (statistics_) vkCmdResetQueryPool(cmd, statistics_, 0, 1);
   if (timestamps_) vkCmdResetQueryPool(cmd, timestamps_, 0, kTimestampCount);
+
+  // Each tessellated instance gets a slice of this frame's lists: a list per bucket, counters, draw commands.
+  const DrawSizes sizes = drawSizes(s);
+  const bool quads = renderModeInfo(s.mode).primitive == PatchPrimitive::Quad;
+  plans_.clear();
+  planOf_.assign(instances.size(), -1);
+  planBuckets_ = sizes.buckets;
+  std::size_t entries = 0, commands = 0;
+  for (std::size_t i = 0; i < instances.size(); ++i) {
+    if (instances[i].tree >= trees_.size()) throw std::out_of_range("tree instance names tree " + std::to_string(instances[i].tree));
+    if (!drawnTessellated(instances[i], s)) continue;
+    InstancePlan plan;
+    plan.tree = instances[i].tree;
+    plan.primitives = quads ? trees_[plan.tree]->patchCount : trees_[plan.tree]->triangles;
+    plan.listBase = static_cast<std::uint32_t>(entries);
+    plan.counterBase = static_cast<std::uint32_t>(plans_.size() * kCounters);
+    plan.commandBase = static_cast<std::uint32_t>(commands);
+    for (std::uint32_t b = 0; b < sizes.buckets; ++b) plan.maxCommands += (plan.primitives + sizes.perDraw[b] - 1) / sizes.perDraw[b];
+    entries += static_cast<std::size_t>(plan.primitives) * sizes.buckets;
+    commands += plan.maxCommands;
+    if (entries > 0xffffffffu || commands > 0xffffffffu) throw std::runtime_error("the scene has more patches than one frame's lists index");
+    planOf_[i] = static_cast<int>(plans_.size());
+    plans_.push_back(plan);
+  }
+  if (plans_.empty()) return;
+  ensureFrameBuffers(entries, plans_.size() * kCounters, commands);
+
+  // Control points of meshes drawn for the first time in this mode: once per mesh, then kept.
+  const RenderMode controlMode = s.mode;
+  const auto m = static_cast<std::size_t>(controlMode);
+  bool built = false;
+  for (const InstancePlan& plan : plans_) {
+    const GpuTree& tree = *trees_[plan.tree];
+    TreeControl& c = controls_[tree.id];
+    const bool missing = c.control[m].handle() == VK_NULL_HANDLE;
+    if (missing) {
+      const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+      c.control[m] = vk::Buffer(context_, std::size_t{plan.primitives} * renderModeInfo(controlMode).controlVec4s * 16, storage,
+                                VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+      c.hulls[m] = vk::Buffer(context_, std::size_t{plan.primitives} * ARBOR_HULL_VEC4S * 16, storage, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+      c.boundMode = -1;
+    }
+    bindControl(plan.tree, controlMode);
+    if (!missing) continue;
+    PassConstants pass{};
+    pass.primitiveCount = plan.primitives;
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_.modes[m].build);
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_.computeLayout, 0, 1, &c.computeSet, 0, nullptr);
+    vkCmdPushConstants(cmd, pipelines_.computeLayout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof pass, &pass);
+    vkCmdDispatch(cmd, (plan.primitives + ARBOR_COMPUTE_GROUP - 1) / ARBOR_COMPUTE_GROUP, 1, 1);
+    built = true;
+  }
+  if (built) {
+    barrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
+            VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TESSELLATION_EVALUATION_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT);
+  }
+
+  // Cull, set factors and bucket every tessellated instance's patches, then turn the buckets into draws.
+  vkCmdFillBuffer(cmd, counts_.handle(), 0, plans_.size() * kCounters * sizeof(std::uint32_t), 0);
+  barrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+          VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
+  // Back faces stay when displacement may turn them towards the eye, and when the crack test wants them seen.
+  const bool backFaces = s.cull && s.displacement == 0.0f && !s.revealBackFaces;
+  const std::uint32_t flags = bit(s.cull, kCullFrustum) | bit(backFaces, kCullBackFaces) | bit(sizes.buckets > 1, kBucketed) |
+                              bit(context_.drawIndirectCount() == nullptr, kZeroFill) | bit(!quads, kTriangles);
+  auto passFor = [&](std::size_t i, const InstancePlan& plan) {
+    PassConstants pass{};
+    std::memcpy(pass.model, glm::value_ptr(instances[i].model), sizeof pass.model);
+    pass.primitiveCount = plan.primitives;
+    pass.listBase = plan.listBase;
+    pass.counterBase = plan.counterBase;
+    pass.commandBase = plan.commandBase;
+    pass.flags = flags;
+    pass.maxCommands = plan.maxCommands;
+    std::copy(sizes.perDraw.begin(), sizes.perDraw.end(), pass.perDraw);
+    return pass;
+  };
+  for (int step = 0; step < 2; ++step) {
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, step == 0 ? pipelines_.cull : pipelines_.drawCommands);
+    for (std::size_t i = 0; i < instances.size(); ++i) {
+      if (planOf_[i] < 0) continue;
+      const InstancePlan& plan = plans_[static_cast<std::size_t>(planOf_[i])];
+      const PassConstants pass = passFor(i, plan);
+      vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_.computeLayout, 0, 1, &controls_[trees_[plan.tree]->id].computeSet,
+                              0, nullptr);
+      vkCmdPushConstants(cmd, pipelines_.computeLayout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof pass, &pass);
+      vkCmdDispatch(cmd, step == 0 ? (plan.primitives + ARBOR_COMPUTE_GROUP - 1) / ARBOR_COMPUTE_GROUP : 1, 1, 1);
+    }
+    if (step == 0) {
+      barrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+              VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
+    }
+  }
+  barrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
+          VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT,
+          VK_ACCESS_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_TRANSFER_READ_BIT);
+  const VkBufferCopy copy{0, 0, plans_.size() * kCounters * sizeof(std::uint32_t)};
+  vkCmdCopyBuffer(cmd, counts_.handle(), countsReadback_.handle(), 1, &copy);
+  barrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT);
 }
 
 void TreeRenderer::drawLines(VkCommandBuffer cmd, VkBuffer vertices, std::uint32_t count, const glm::mat4& model) {
@@ -245,7 +494,6 @@ void TreeRenderer::draw(VkCommandBuffer cmd, VkExtent2D extent, const RenderSett
   auto bindTree = [&](std::uint32_t tree, const glm::mat4& model) {
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.layout, 0, 1, &sets_[tree], 0, nullptr);
     std::memcpy(constants.model, glm::value_ptr(model), sizeof constants.model);
-    constants.patchBase = 0;
     constants.leafCount = tree < trees_.size() ? trees_[tree]->leafCount : 0u;
     vkCmdPushConstants(cmd, pipelines_.layout, stages, 0, sizeof constants, &constants);
   };
@@ -258,43 +506,50 @@ void TreeRenderer::draw(VkCommandBuffer cmd, VkExtent2D extent, const RenderSett
   }
   drewTree_ = false;
   lastDraws_ = 0;
+  if (instances.size() != planOf_.size()) throw std::logic_error("draw got other instances than beginFrame");
   for (const TreeInstance& instance : instances) {
     if (instance.tree >= trees_.size()) throw std::out_of_range("tree instance names tree " + std::to_string(instance.tree));
     const GpuTree& tree = *trees_[instance.tree];
-    drewTree_ = drewTree_ || (s.mode == RenderMode::ACC ? tree.patchCount : tree.triangles) > 0;
+    drewTree_ = drewTree_ || (renderModeInfo(s.mode).primitive == PatchPrimitive::Quad ? tree.patchCount : tree.triangles) > 0;
   }
   if (!drewTree_) return;
 
-  const std::uint32_t chunk = primitivesPerDraw(s);
-  // Far trees skip the tessellator: their mesh at its limit positions is what ACC would draw at factor 1.
-  const auto drawnFar = [&](const TreeInstance& instance, const GpuTree& tree) {
-    return instance.far && tree.farVertices.handle() != VK_NULL_HANDLE && s.mode != RenderMode::Flat && !s.ceiling;
-  };
-  // `far`: the flat pipeline over the limit-surface vertices, however the tree is otherwise drawn.
-  auto drawMesh = [&](const GpuTree& tree, VkPipeline pipeline, RenderMode drawn, bool far) {
+  // An instance is drawn flat (the flat mode, or far: its mesh at the limit positions, ACC's factor 1 without
+  // the tessellator) or by the indirect draws its slice of the culling pass wrote.
+  auto drawMesh = [&](std::size_t i, const GpuTree& tree, bool wire) {
+    const int planIndex = planOf_[i];
+    const RenderMode drawn = planIndex >= 0 ? s.mode : RenderMode::Flat;
+    const ModePipelines& mode = pipelines_.modes[static_cast<std::size_t>(drawn)];
+    const VkPipeline pipeline = wire ? mode.wireframe
+                                : s.ceiling && planIndex >= 0 ? pipelines_.ceiling
+                                : s.revealBackFaces ? mode.twoSided
+                                                    : mode.fill;
+    if (!pipeline) return;
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
-    if (drawn == RenderMode::Flat) {
+    if (planIndex < 0) {
       const VkDeviceSize offset = 0;
+      const bool far = isTessellated(s.mode) && tree.farVertices.handle() != VK_NULL_HANDLE;
       const VkBuffer vertices = far ? tree.farVertices.handle() : tree.vertices.handle();
       vkCmdBindVertexBuffers(cmd, 0, 1, &vertices, &offset);
       vkCmdBindIndexBuffer(cmd, tree.indices.handle(), 0, VK_INDEX_TYPE_UINT32);
+      vkCmdDrawIndexed(cmd, 3 * tree.triangles, 1, 0, 0, 0);
+      if (!wire) ++lastDraws_;
+      return;
     }
-    const std::uint32_t total = drawn == RenderMode::ACC ? tree.patchCount : tree.triangles;
-    const std::uint32_t perDraw = drawn == s.mode ? chunk : total;  // only tessellated draws are split
-    for (std::uint32_t base = 0; base < total; base += perDraw) {
-      const std::uint32_t count = std::min(perDraw, total - base);
-      constants.patchBase = base;
-      vkCmdPushConstants(cmd, pipelines_.layout, stages, 0, sizeof constants, &constants);
-      // PN and ACC fetch their corners in the control stage; only flat uses the vertex input.
-      if (drawn == RenderMode::ACC) vkCmdDraw(cmd, 4 * count, 1, 4 * base, 0);
-      else if (drawn == RenderMode::PN) vkCmdDraw(cmd, 3 * count, 1, 3 * base, 0);
-      else vkCmdDrawIndexed(cmd, 3 * count, 1, 3 * base, 0, 0);
-      ++lastDraws_;
+    const InstancePlan& plan = plans_[static_cast<std::size_t>(planIndex)];
+    const VkDeviceSize commandOffset = VkDeviceSize{plan.commandBase} * ARBOR_DRAW_COMMAND_BYTES;
+    if (const PFN_vkCmdDrawIndirectCountKHR drawCount = context_.drawIndirectCount()) {
+      drawCount(cmd, commands_.handle(), commandOffset, counts_.handle(), (plan.counterBase + ARBOR_BUCKETS) * sizeof(std::uint32_t),
+                plan.maxCommands, ARBOR_DRAW_COMMAND_BYTES);
+    } else if (context_.features().multiDrawIndirect) {
+      vkCmdDrawIndirect(cmd, commands_.handle(), commandOffset, plan.maxCommands, ARBOR_DRAW_COMMAND_BYTES);  // padded with empty draws
+    } else {
+      for (std::uint32_t c = 0; c < plan.maxCommands; ++c) {
+        vkCmdDrawIndirect(cmd, commands_.handle(), commandOffset + VkDeviceSize{c} * ARBOR_DRAW_COMMAND_BYTES, 1, ARBOR_DRAW_COMMAND_BYTES);
+      }
     }
   };
   auto drawPoints = [&](VkPipeline pipeline, std::uint32_t count, std::uint32_t first = 0) {
-    constants.patchBase = 0;
-    vkCmdPushConstants(cmd, pipelines_.layout, stages, 0, sizeof constants, &constants);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
     vkCmdDraw(cmd, count, 1, first, 0);  // the point's index (gl_VertexIndex) counts from `first`
     ++lastDraws_;
@@ -302,16 +557,11 @@ void TreeRenderer::draw(VkCommandBuffer cmd, VkExtent2D extent, const RenderSett
 
   if (timestamps_) vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, timestamps_, 0);
   if (statistics_) vkCmdBeginQuery(cmd, statistics_, 0, 0);
-  for (const TreeInstance& instance : instances) {
+  for (std::size_t i = 0; i < instances.size(); ++i) {
+    const TreeInstance& instance = instances[i];
     const GpuTree& tree = *trees_[instance.tree];
     bindTree(instance.tree, instance.model);
-    const bool far = drawnFar(instance, tree);
-    const RenderMode drawn = far ? RenderMode::Flat : s.mode;
-    const auto m = static_cast<std::size_t>(drawn);
-    const VkPipeline mesh = s.ceiling && s.mode == RenderMode::ACC ? pipelines_.ceiling
-                            : s.revealBackFaces                       ? pipelines_.twoSided[m]
-                                                                      : pipelines_.tree[m];
-    drawMesh(tree, mesh, drawn, far);
+    drawMesh(i, tree, false);
     const bool sketch = instance.far && tree.sketchCount > 0;
     const std::uint32_t impostors = sketch ? tree.sketchCount : tree.impostorCount;
     if (s.impostors && impostors > 0 && pipelines_.impostors) drawPoints(pipelines_.impostors, impostors, sketch ? tree.impostorCount : 0u);
@@ -332,14 +582,9 @@ void TreeRenderer::draw(VkCommandBuffer cmd, VkExtent2D extent, const RenderSett
   if (statistics_) vkCmdEndQuery(cmd, statistics_, 0);
   if (timestamps_) vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, timestamps_, 1);
   if (s.wireframe) {
-    for (const TreeInstance& instance : instances) {
-      const GpuTree& tree = *trees_[instance.tree];
-      const bool far = drawnFar(instance, tree);
-      const RenderMode drawn = far ? RenderMode::Flat : s.mode;
-      const VkPipeline wire = pipelines_.wireframe[static_cast<std::size_t>(drawn)];
-      if (!wire) continue;
-      bindTree(instance.tree, instance.model);
-      drawMesh(tree, wire, drawn, far);
+    for (std::size_t i = 0; i < instances.size(); ++i) {
+      bindTree(instances[i].tree, instances[i].model);
+      drawMesh(i, *trees_[instances[i].tree], true);
     }
   }
 }
@@ -348,6 +593,16 @@ FrameStats TreeRenderer::stats() const {
   FrameStats f;
   f.draws = lastDraws_;
   if (!drewTree_) return f;
+  if (!plans_.empty()) {
+    const auto* counts = static_cast<const std::uint32_t*>(countsReadback_.mapped());
+    for (const InstancePlan& plan : plans_) {
+      std::uint64_t drawn = 0;
+      for (std::uint32_t b = 0; b < ARBOR_BUCKETS; ++b) drawn += counts[plan.counterBase + b];
+      f.patchesDrawn += drawn;
+      f.patchesCulled += plan.primitives - drawn;
+      f.draws += counts[plan.counterBase + ARBOR_BUCKETS];
+    }
+  }
   const VkDevice device = context_.device();
   if (statistics_) {
     std::uint64_t primitives = 0;

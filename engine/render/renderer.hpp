@@ -1,6 +1,10 @@
 #pragma once
-// Records a frame of sky, ground and tree into a render pass, in any of the three modes, splitting tree draws
-// where the driver needs it, and measures what the GPU did (triangles generated, time).
+// Records a frame of sky, ground and trees in any render mode. Tessellated modes build each mesh's control
+// points once (compute), then every frame a compute pass culls patches, sets their factors and sorts them into
+// indirect draws sized for the device; the tessellation stages only evaluate. Measures what the GPU did.
+#include <array>
+#include <unordered_map>
+
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 #include <vector>
@@ -29,7 +33,8 @@ struct RenderSettings {
   float textureRepeat = 1.0f;    // texture repeats per unit of v
   bool wireframe = false;        // outline the tessellated triangles over the surface
   bool ground = true;
-  bool cull = true;              // skip patches outside the view
+  bool cull = true;              // skip patches outside the view, and (undisplaced) those facing away
+  bool bucketed = true;          // size each draw for its patches' own factors (false: all for the largest)
   bool leaves = false;            // draw the leaves (needs geometry shaders)
   float leafDensity = 1.0f;       // share of the leaves drawn (0..1), the first of the random order
   float leafLodDistance = 0.0f;   // > 0: all leaves up to this distance (m), then thinning with distance squared
@@ -38,7 +43,7 @@ struct RenderSettings {
   bool ceiling = false;           // ACC mode with trivial stages: the device's bare tessellation rate (bench)
   float groundRadius = 0.0f;     // > 0: the ground fades into the horizon this far from the eye (forests)
   bool revealBackFaces = false;  // draw back faces too, in magenta: on a closed surface any that shows is a crack
-  std::uint32_t patchesPerDraw = 0;  // > 0: split tree draws into this many patches (tests); 0: what the driver needs
+  std::uint32_t patchesPerDraw = 0;  // > 0: at most this many patches per draw, one bucket (tests); 0: what the driver needs
   glm::vec3 lightDirection{0.45f, -0.6f, 0.75f};
   float lightIntensity = 1.0f;
 };
@@ -46,7 +51,8 @@ struct RenderSettings {
 struct FrameStats {
   std::uint64_t triangles = 0;   // primitives that reached clipping (pipeline statistics), tree only
   double gpuMilliseconds = 0.0;  // tree draws, from timestamps
-  std::uint32_t draws = 0;
+  std::uint32_t draws = 0;       // tree draws, the GPU's indirect ones counted
+  std::uint64_t patchesDrawn = 0, patchesCulled = 0;  // tessellated instances, after the culling pass
   bool hasTriangles = false, hasTime = false;
 };
 
@@ -57,6 +63,12 @@ struct CapturedPoint {
   glm::vec3 position;   // on the ACC patch
   glm::vec3 displaced;  // after displacement (equal to position without it)
   glm::vec3 uvw;        // texture coordinates there: seam-safe u, v, flip coordinate
+};
+
+// One indirect draw of the last frame and the patches it drew (tests): patch index and outer factors.
+struct PatchDraw {
+  std::uint32_t instance = 0;
+  std::vector<std::pair<std::uint32_t, std::array<std::uint32_t, 4>>> patches;
 };
 
 // One tree of a scene: which of the renderer's trees (setTrees) it is and where it stands.
@@ -85,8 +97,15 @@ class TreeRenderer {
   void setCapture(std::uint32_t capacity);
   std::vector<CapturedPoint> captured() const;
 
-  // Before the render pass begins: reset the queries, upload the scene.
-  void beginFrame(VkCommandBuffer cmd, const Camera& camera, VkExtent2D extent, const RenderSettings& settings);
+  // Keeps this frame's patch lists and draw commands readable by the host (tests; slower on discrete GPUs).
+  void setInspection(bool on);
+  // With inspection on, after the frame completed: every indirect draw of the last frame with its patches.
+  std::vector<PatchDraw> inspectDraws() const;
+
+  // Before the render pass begins: reset the queries, upload the scene, build missing control points, cull and
+  // bucket the tessellated instances' patches into this frame's draws. `instances` as draw will get them.
+  void beginFrame(VkCommandBuffer cmd, const Camera& camera, VkExtent2D extent, const RenderSettings& settings,
+                  const std::vector<TreeInstance>& instances);
   // Inside the render pass: sky, ground and every instance (statistics and time cover all of them).
   void draw(VkCommandBuffer cmd, VkExtent2D extent, const RenderSettings& settings, const std::vector<TreeInstance>& instances);
   // Inside the render pass, after draw: `count` LineVertex ends (pairs) from `vertices`, placed by `model`,
@@ -95,12 +114,32 @@ class TreeRenderer {
   // After the frame's commands have completed.
   FrameStats stats() const;
 
-  // Patches (or triangles) per draw: lavapipe wraps its 16-bit indices beyond 65535 tessellated vertices.
-  std::uint32_t primitivesPerDraw(const RenderSettings& settings) const;
+  // Patches per draw in each bucket, and how many buckets: lavapipe wraps its 16-bit indices beyond 65535
+  // tessellated vertices and garbles patches beyond 4096 input vertices per draw; other devices take one draw.
+  struct DrawSizes {
+    std::uint32_t buckets = 1;
+    std::array<std::uint32_t, 8> perDraw{};
+  };
+  DrawSizes drawSizes(const RenderSettings& settings) const;
 
  private:
+  // A distinct tree's control points and hulls per tessellated mode, built on first use.
+  struct TreeControl {
+    std::array<vk::Buffer, kRenderModeCount> control, hulls;
+    VkDescriptorSet computeSet = VK_NULL_HANDLE;
+    int boundMode = -1;       // the mode whose control buffers the tree's sets point at
+    std::uint64_t boundFrame = 0;  // the frame buffers' generation the compute set points at
+  };
+  // One tessellated instance's slice of this frame's lists.
+  struct InstancePlan {
+    std::uint32_t tree = 0, primitives = 0, listBase = 0, counterBase = 0, commandBase = 0, maxCommands = 0;
+  };
+
   glm::vec3 eye_{0.0f};  // of the frame begun last: leaf draws are cut to what thinning keeps
   void writeSet(VkDescriptorSet set, const GpuTree* tree);
+  void bindControl(std::uint32_t tree, RenderMode mode);
+  void ensureFrameBuffers(std::size_t entries, std::size_t counters, std::size_t commands);
+  bool drawnTessellated(const TreeInstance& instance, const RenderSettings& s) const;
 
   const vk::VulkanContext& context_;
   Pipelines pipelines_;
@@ -113,6 +152,15 @@ class TreeRenderer {
   std::vector<VkDescriptorSet> sets_;  // one per tree; the first also serves sky and ground
   VkQueryPool statistics_ = VK_NULL_HANDLE, timestamps_ = VK_NULL_HANDLE;
   std::vector<const GpuTree*> trees_;
+  std::unordered_map<std::uint64_t, TreeControl> controls_;  // by GpuTree::id
+  VkDescriptorPool computePool_ = VK_NULL_HANDLE;
+  // This frame's lists: surviving patches per bucket, counters, draw commands; and the counters read back.
+  vk::Buffer visible_, counts_, commands_, countsReadback_;
+  std::uint64_t frameGeneration_ = 0;  // bumped when those buffers are reallocated
+  bool inspect_ = false;
+  std::vector<InstancePlan> plans_;
+  std::vector<int> planOf_;  // per instance of the frame: its plan, or -1 when drawn untessellated
+  std::uint32_t planBuckets_ = 1;
   std::uint32_t lastDraws_ = 0;
   bool drewTree_ = false;
 };

@@ -138,6 +138,19 @@ VulkanContext::VulkanContext(const ContextOptions& options) {
   enabled_.samplerAnisotropy = available.samplerAnisotropy;
   enabled_.vertexPipelineStoresAndAtomics = available.vertexPipelineStoresAndAtomics;
   enabled_.largePoints = available.largePoints;
+  enabled_.multiDrawIndirect = available.multiDrawIndirect;  // one call for all of an instance's patch draws
+
+  // The culling pass decides how many draws a frame has: with this extension the GPU's count is used as is.
+  std::vector<const char*> deviceExtensions = options.deviceExtensions;
+  std::uint32_t extensionCount = 0;
+  vkEnumerateDeviceExtensionProperties(physical_, nullptr, &extensionCount, nullptr);
+  std::vector<VkExtensionProperties> deviceExtensionList(extensionCount);
+  vkEnumerateDeviceExtensionProperties(physical_, nullptr, &extensionCount, deviceExtensionList.data());
+  bool indirectCount = false;
+  for (const VkExtensionProperties& e : deviceExtensionList) {
+    indirectCount = indirectCount || std::string(e.extensionName) == VK_KHR_DRAW_INDIRECT_COUNT_EXTENSION_NAME;
+  }
+  if (indirectCount) deviceExtensions.push_back(VK_KHR_DRAW_INDIRECT_COUNT_EXTENSION_NAME);
 
   const float priority = 1.0f;
   VkDeviceQueueCreateInfo queueInfo{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
@@ -148,9 +161,12 @@ VulkanContext::VulkanContext(const ContextOptions& options) {
   deviceInfo.queueCreateInfoCount = 1;
   deviceInfo.pQueueCreateInfos = &queueInfo;
   deviceInfo.pEnabledFeatures = &enabled_;
-  deviceInfo.enabledExtensionCount = static_cast<std::uint32_t>(options.deviceExtensions.size());
-  deviceInfo.ppEnabledExtensionNames = options.deviceExtensions.data();
+  deviceInfo.enabledExtensionCount = static_cast<std::uint32_t>(deviceExtensions.size());
+  deviceInfo.ppEnabledExtensionNames = deviceExtensions.data();
   check(vkCreateDevice(physical_, &deviceInfo, nullptr, &device_), "vkCreateDevice");
+  if (indirectCount) {
+    drawIndirectCount_ = reinterpret_cast<PFN_vkCmdDrawIndirectCountKHR>(vkGetDeviceProcAddr(device_, "vkCmdDrawIndirectCountKHR"));
+  }
   vkGetDeviceQueue(device_, queueFamily_, 0, &queue_);
 
   VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};

@@ -42,6 +42,9 @@ class VulkanContext {
   const VkPhysicalDeviceProperties& properties() const { return properties_; }
   const VkPhysicalDeviceFeatures& features() const { return enabled_; }
 
+  // vkCmdDrawIndirectCount (VK_KHR_draw_indirect_count), or null where the device has not got it.
+  PFN_vkCmdDrawIndirectCountKHR drawIndirectCount() const { return drawIndirectCount_; }
+
   // Mesa's lavapipe (llvmpipe): one draw must not emit more than 65535 tessellated vertices there.
   bool isLavapipe() const { return lavapipe_; }
   std::string deviceDescription() const;
@@ -70,6 +73,7 @@ class VulkanContext {
   VkPhysicalDeviceProperties properties_{};
   VkPhysicalDeviceFeatures enabled_{};
   VkPhysicalDeviceMemoryProperties memory_{};
+  PFN_vkCmdDrawIndirectCountKHR drawIndirectCount_ = nullptr;
   bool lavapipe_ = false;
   bool validation_ = false;
   std::atomic<std::uint32_t> validationErrors_{0};

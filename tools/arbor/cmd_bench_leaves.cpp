@@ -150,7 +150,7 @@ void addBenchLeavesCommand(CLI::App& bench, Action& action) {
   cmd->add_option("--seed", o->seed, "Random seed")->check(Seed())->capture_default_str();
   cmd->add_option("--counts", o->counts, "Leaves drawn per row, comma-separated (the first of the random order)")->capture_default_str();
   cmd->add_option("--shadow-leaves", o->shadows, "Self-shadowing settings per count, comma-separated, 0 to 4096 (0: off)")->capture_default_str();
-  cmd->add_option("--mode", o->mode, "How the tree is drawn: flat, pn, acc")->capture_default_str();
+  cmd->add_option("--mode", o->mode, "How the tree is drawn: " + modeHelp())->capture_default_str();
   cmd->add_option("--tess", o->tess, "Tessellation factor of the tree")->check(Number(1.0, 64.0))->capture_default_str();
   cmd->add_option("--size", o->size, "Image size WIDTHxHEIGHT")->capture_default_str();
   cmd->add_option("--frames", o->frames, "Timed frames per row, after one warm-up")->check(Whole(1, 10000))->capture_default_str();

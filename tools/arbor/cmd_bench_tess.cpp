@@ -58,11 +58,13 @@ std::vector<Cell> makeCells(const BenchTessOptions& o) {
   const std::vector<float> targets = parseNumbers(o.adaptive, "--adaptive", 0.5f, 1000.0f);
   std::vector<Cell> cells;
   for (const std::string& name : splitList(o.modes, "--modes")) {
-    const bool displaced = name == "acc+disp" || name == "pn+disp";
+    // Any tessellated mode may be displaced: NAME+disp.
+    const bool displaced = name.size() > 5 && name.compare(name.size() - 5, 5, "+disp") == 0;
     Cell base;
     base.settings.mode = parseMode(displaced ? name.substr(0, name.size() - 5) : name, "--modes");
     base.settings.displacement = displaced ? 0.5f : 0.0f;
-    if (base.settings.mode == render::RenderMode::Flat) {
+    if (displaced && !render::isTessellated(base.settings.mode)) throw InputError(name, "--modes", "only tessellated modes are displaced");
+    if (!render::isTessellated(base.settings.mode)) {
       base.label = name;
       cells.push_back(base);
       continue;
@@ -80,7 +82,7 @@ std::vector<Cell> makeCells(const BenchTessOptions& o) {
       cells.push_back(c);
     }
   }
-  if (cells.empty()) throw InputError(o.modes, "--modes", "no mode given; allowed: flat, pn, acc, acc+disp, pn+disp");
+  if (cells.empty()) throw InputError(o.modes, "--modes", "no mode given; allowed: " + render::renderModeList() + ", each tessellated one also +disp");
   return cells;
 }
 
@@ -127,7 +129,7 @@ int runBenchTess(const BenchTessOptions& o) {
   if (!o.plot.empty()) requireOutputFile(o.plot, "--plot");
   // Rows are collected and the file written whole at the end: a refused or interrupted run leaves an old CSV alone.
   std::ostringstream csv;
-  csv << "mode,factor,adaptive_px,displacement,triangles,cpu_ms_median,cpu_ms_min,cpu_ms_max,gpu_ms_median,gpu_ms_min,"
+  csv << "mode,factor,adaptive_px,displacement,triangles,patches_drawn,patches_culled,draws,cpu_ms_median,cpu_ms_min,cpu_ms_max,gpu_ms_median,gpu_ms_min,"
          "gpu_ms_max,mtriangles_per_s,share_of_ceiling,gpu_bytes\n";
 
   const TreeSource source = loadTreeArgument(o.species, nullptr, o.angles);
@@ -173,7 +175,7 @@ int runBenchTess(const BenchTessOptions& o) {
     Measured m;
     m.label = label;
     m.mode = s.ceiling ? "ceiling" : render::renderModeName(s.mode);
-    m.factor = s.mode == render::RenderMode::Flat ? 1.0f : s.tessLevel;
+    m.factor = render::isTessellated(s.mode) ? s.tessLevel : 1.0f;
     m.adaptive = s.adaptivePixels;
     m.displacement = s.displacement;
     m.timed = timeFrames(session, scene.camera, s, o.frames, &scene.instances);
@@ -186,7 +188,7 @@ int runBenchTess(const BenchTessOptions& o) {
   // The ceiling first: ACC's patches with trivial stages at each uniform factor.
   std::vector<float> uniformFactors;
   for (const Cell& c : cells) {
-    if (c.settings.mode != render::RenderMode::Flat && c.settings.adaptivePixels <= 0.0f &&
+    if (render::isTessellated(c.settings.mode) && c.settings.adaptivePixels <= 0.0f &&
         std::find(uniformFactors.begin(), uniformFactors.end(), c.settings.tessLevel) == uniformFactors.end()) {
       uniformFactors.push_back(c.settings.tessLevel);
     }
@@ -217,20 +219,27 @@ int runBenchTess(const BenchTessOptions& o) {
     }
     return bestCeiling > 0.0 ? m.rate / bestCeiling : 0.0;  // adaptive and flat cells: against the best ceiling
   };
-  std::printf("| cell | triangles | CPU frame ms (min-max) | GPU frame ms (min-max) | M triangles/s | of ceiling | GPU MiB |\n");
-  std::printf("|---|---|---|---|---|---|---|\n");
+  std::printf("| cell | triangles | patches drawn / culled | draws | CPU frame ms (min-max) | GPU frame ms (min-max) | M triangles/s | of ceiling | GPU MiB |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|\n");
   std::vector<const Measured*> rows;
   for (const Measured& m : ceiling) rows.push_back(&m);
   for (const Measured& m : results) rows.push_back(&m);
   for (const Measured* m : rows) {
-    std::printf("| %s | %llu | %.2f (%.2f-%.2f) | ", m->label.c_str(), static_cast<unsigned long long>(m->triangles), m->timed.cpu.median,
-                m->timed.cpu.lo, m->timed.cpu.hi);
+    const render::FrameStats& gpu = m->timed.last.gpu;
+    std::printf("| %s | %llu | ", m->label.c_str(), static_cast<unsigned long long>(m->triangles));
+    if (gpu.patchesDrawn + gpu.patchesCulled > 0) {
+      std::printf("%llu / %llu | ", static_cast<unsigned long long>(gpu.patchesDrawn), static_cast<unsigned long long>(gpu.patchesCulled));
+    } else {
+      std::printf("- | ");
+    }
+    std::printf("%u | %.2f (%.2f-%.2f) | ", gpu.draws, m->timed.cpu.median, m->timed.cpu.lo, m->timed.cpu.hi);
     if (!m->timed.hasGpu) std::printf("- | ");
     else std::printf("%.3f (%.3f-%.3f)%s | ", m->timed.gpu.median, m->timed.gpu.lo, m->timed.gpu.hi, hostTimed ? " *" : "");
     std::printf("%.2f | %s | %.1f |\n", m->rate, o.noCeiling ? "-" : (std::to_string(static_cast<int>(std::lround(100.0 * shareOfCeiling(*m)))) + " %").c_str(),
                 mib(scene.bytes));
     {
-      csv << m->mode << ',' << m->factor << ',' << m->adaptive << ',' << m->displacement << ',' << m->triangles << ',' << m->timed.cpu.median
+      csv << m->mode << ',' << m->factor << ',' << m->adaptive << ',' << m->displacement << ',' << m->triangles << ','
+          << m->timed.last.gpu.patchesDrawn << ',' << m->timed.last.gpu.patchesCulled << ',' << m->timed.last.gpu.draws << ',' << m->timed.cpu.median
           << ',' << m->timed.cpu.lo << ',' << m->timed.cpu.hi << ',' << m->timed.gpu.median << ',' << m->timed.gpu.lo << ',' << m->timed.gpu.hi
           << ',' << m->rate << ',' << (o.noCeiling ? 0.0 : shareOfCeiling(*m)) << ',' << scene.bytes << '\n';
     }
@@ -280,7 +289,7 @@ int runBenchTess(const BenchTessOptions& o) {
       m.seconds = frameMs * 1e-3;
       m.rate = m.seconds > 0.0 ? static_cast<double>(m.triangles) / m.seconds * 1e-6 : 0.0;
       {
-        csv << "cpu-subdivided," << factor << ",0,0," << m.triangles << ',' << timed.cpu.median << ',' << timed.cpu.lo << ',' << timed.cpu.hi << ','
+        csv << "cpu-subdivided," << factor << ",0,0," << m.triangles << ",0,0," << timed.last.gpu.draws << ',' << timed.cpu.median << ',' << timed.cpu.lo << ',' << timed.cpu.hi << ','
             << timed.gpu.median << ',' << timed.gpu.lo << ',' << timed.gpu.hi << ',' << m.rate << ",0," << bytes << '\n';
       }
       subdivided.push_back(m);
@@ -331,7 +340,7 @@ void addBenchTessCommand(CLI::App& bench, Action& action) {
   addAnglesOption(cmd, o->angles);
   cmd->add_option("--seed", o->seed, "Random seed")->check(Seed())->capture_default_str();
   cmd->add_option("--levels", o->levels, "Stem levels (default: the species' Levels)")->check(Whole(1, 8));
-  cmd->add_option("--modes", o->modes, "Comma-separated: flat, pn, acc, acc+disp, pn+disp")->capture_default_str();
+  cmd->add_option("--modes", o->modes, "Comma-separated: " + render::renderModeList() + "; a tessellated mode with +disp is displaced")->capture_default_str();
   cmd->add_option("--factors", o->factors, "Uniform tessellation factors, 1 to 64 (empty: none)")->capture_default_str();
   cmd->add_option("--adaptive", o->adaptive, "Adaptive targets: edge lengths in pixels, 0.5 to 1000");
   cmd->add_option("--size", o->size, "Image size WIDTHxHEIGHT")->capture_default_str();

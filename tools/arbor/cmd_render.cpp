@@ -134,7 +134,7 @@ int runRender(const RenderOptions& o) {
   std::printf("%s on %s%s\n", source.name().c_str(), context.deviceDescription().c_str(),
               context.validationEnabled() ? ", validation on" : "");
   std::printf("  mode             %s", render::renderModeName(settings.mode));
-  if (settings.mode != render::RenderMode::Flat) {
+  if (render::isTessellated(settings.mode)) {
     if (settings.adaptivePixels > 0.0f) std::printf(", adaptive to %.1f px edges", static_cast<double>(settings.adaptivePixels));
     else std::printf(", tessellation factor %g", static_cast<double>(settings.tessLevel));
   }
@@ -165,7 +165,7 @@ void addRenderCommand(CLI::App& app, Action& action) {
   addAnglesOption(cmd, o->angles);
   cmd->add_option("--seed", o->seed, "Random seed")->check(Seed())->capture_default_str();
   cmd->add_option("--levels", o->levels, "Stem levels to grow and mesh (default: the species' Levels)")->check(Whole(1, 8));
-  cmd->add_option("--mode", o->mode, "flat (coarse mesh), pn (PN-triangles), acc (Catmull-Clark approximation)")
+  cmd->add_option("--mode", o->mode, modeHelp())
       ->capture_default_str();
   cmd->add_option("--tess", o->tess, "Uniform tessellation factor")->check(Number(1.0, 64.0))->capture_default_str();
   cmd->add_option("--adaptive", o->adaptive, "Adaptive tessellation: target edge length in pixels (overrides --tess)")

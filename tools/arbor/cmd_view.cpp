@@ -152,7 +152,7 @@ void addViewCommand(CLI::App& app, Action& action) {
   cmd->add_flag("--no-vsync", o->noVsync, "Present without waiting for vertical blank (mailbox or immediate)");
   cmd->add_flag("--fullscreen", o->fullscreen, "Start fullscreen (F11 toggles)");
   cmd->add_flag("--orbit", o->orbit, "Start with the orbit camera (Tab toggles)");
-  cmd->add_option("--mode", o->mode, "flat, pn, acc")->capture_default_str();
+  cmd->add_option("--mode", o->mode, modeHelp())->capture_default_str();
   cmd->add_option("--tess", o->tess, "Uniform tessellation factor (default: adaptive)")->check(Number(1.0, 64.0));
   cmd->add_option("--adaptive", o->adaptive, "Adaptive tessellation: target edge length in pixels")->check(Number(0.5, 1000.0))->capture_default_str();
   cmd->add_option("--max-tess", o->maxTess, "Largest adaptive factor (default 64; lavapipe: 16, it splits draws by the largest)")

@@ -9,10 +9,14 @@
 namespace arbor::cli {
 
 render::RenderMode parseMode(const std::string& mode, const std::string& field) {
-  if (mode == "flat") return render::RenderMode::Flat;
-  if (mode == "pn") return render::RenderMode::PN;
-  if (mode == "acc") return render::RenderMode::ACC;
-  throw InputError(mode, field, "unknown mode; allowed: flat, pn, acc");
+  if (const auto found = render::findRenderMode(mode)) return *found;
+  throw InputError(mode, field, "unknown mode; allowed: " + render::renderModeList());
+}
+
+std::string modeHelp() {
+  std::string help;
+  for (const render::RenderModeInfo& m : render::renderModes()) help += (help.empty() ? "" : "; ") + std::string(m.name) + ": " + m.summary;
+  return help;
 }
 
 bool validationWanted(bool flag) {

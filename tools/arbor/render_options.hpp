@@ -11,6 +11,8 @@ namespace arbor::cli {
 
 // "flat", "pn" or "acc"; anything else is bad input naming `field`.
 render::RenderMode parseMode(const std::string& mode, const std::string& field = "--mode");
+// Every render mode with its one-line summary, for --help.
+std::string modeHelp();
 // The same as a unit vector towards the sun.
 glm::vec3 parseLight(const std::string& text);
 // On when asked for, when ARBOR_VALIDATION=1 (the tests set it), and always in debug builds.

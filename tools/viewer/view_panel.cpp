@@ -90,9 +90,13 @@ void drawPanel(ViewState& state, const render::ForestFrame& frame, const render:
   scene.panel(state);  // first: what the scene is about (the modeller's controls, the forest's models)
   if (ImGui::CollapsingHeader("rendering", ImGuiTreeNodeFlags_DefaultOpen)) {
     render::RenderSettings& s = state.settings;
-    int mode = static_cast<int>(s.mode);
-    ImGui::Combo("mode", &mode, "flat\0pn\0acc\0");
-    s.mode = static_cast<render::RenderMode>(mode);
+    if (ImGui::BeginCombo("mode", render::renderModeName(s.mode))) {
+      for (const render::RenderModeInfo& m : render::renderModes()) {
+        if (ImGui::Selectable(m.name, m.mode == s.mode)) s.mode = m.mode;
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", m.summary);
+      }
+      ImGui::EndCombo();
+    }
     bool adaptive = s.adaptivePixels > 0.0f;
     ImGui::Checkbox("adaptive", &adaptive);
     if (adaptive) {

@@ -171,7 +171,7 @@ int runViewer(const ViewerOptions& o, ViewState& state, ViewerScene& scene) {
         overlay->newFrame();
         drawPanel(state, visible, stats, context.deviceDescription(), scene);
       }
-      const bool shown = target->draw([&](VkCommandBuffer cmd) { renderer.beginFrame(cmd, camera, target->extent(), state.settings); },
+      const bool shown = target->draw([&](VkCommandBuffer cmd) { renderer.beginFrame(cmd, camera, target->extent(), state.settings, visible.instances); },
                                       [&](VkCommandBuffer cmd) {
                                         renderer.draw(cmd, target->extent(), state.settings, visible.instances);
                                         scene.drawLines(cmd, renderer);
