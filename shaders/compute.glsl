@@ -13,7 +13,8 @@ layout(set = 0, binding = ARBOR_COMPUTE_TRIANGLES, std430) readonly buffer Trian
 layout(set = 0, binding = ARBOR_COMPUTE_CONTROL, std430) buffer Control { vec4 control[]; };
 layout(set = 0, binding = ARBOR_COMPUTE_HULLS, std430) buffer Hulls { vec4 hulls[]; };
 layout(set = 0, binding = ARBOR_COMPUTE_VISIBLE, std430) buffer Visible { uvec2 visible[]; };
-// Per instance: one counter per bucket, then the number of draw commands written.
+// Per instance (ARBOR_COUNTERS): one counter per bucket, then the draw commands written for the corner
+// pipeline and for the tessellated one.
 layout(set = 0, binding = ARBOR_COMPUTE_COUNTS, std430) buffer Counts { uint counts[]; };
 // VkDrawIndirectCommand: vertex count, instance count, first vertex, first instance.
 layout(set = 0, binding = ARBOR_COMPUTE_COMMANDS, std430) buffer Commands { uvec4 commands[]; };
@@ -24,13 +25,14 @@ const uint kCullBackFaces = 2u; // drop patches whose every normal faces away fr
 const uint kBuckets = 4u;       // sort by largest factor into ARBOR_BUCKETS buckets (else all in bucket 0)
 const uint kZeroFill = 8u;      // pad the draw commands with empty ones (devices without drawIndirectCount)
 const uint kTriangles = 16u;    // PN triangles (else ACC quads)
+const uint kCornerBucket = 32u; // patches at factor 1 go to bucket 0, drawn without the tessellator
 
 layout(push_constant) uniform Pass {
   mat4 model;           // the instance's object -> world
   uint primitiveCount;  // patches or triangles of the tree
   uint listBase;        // first entry of this instance's lists in Visible (bucket b at listBase + b * count)
-  uint counterBase;     // first of this instance's ARBOR_BUCKETS + 1 counters
-  uint commandBase;     // first of this instance's draw commands
+  uint counterBase;     // first of this instance's ARBOR_COUNTERS counters
+  uint commandBase;     // first of this instance's draw commands: one for bucket 0, then the tessellated
   uint flags;
   uint maxCommands;     // room for this instance's draw commands
   uint pad0, pad1;

@@ -46,8 +46,11 @@
 #define ARBOR_HULL_VEC4S 3
 
 // Tessellation buckets: bucket b holds the patches whose largest factor is in (2^(b-1), 2^b], so that each
-// draw can be sized for the vertices its own patches make.
+// draw can be sized for the vertices its own patches make. Bucket 0 (every factor 1) is drawn without the
+// tessellator where the frame allows it; unbucketed frames put every other patch in bucket 1.
 #define ARBOR_BUCKETS 7
+// Per instance: a counter per bucket, then the draws without and with the tessellator.
+#define ARBOR_COUNTERS (ARBOR_BUCKETS + 2)
 
 // Push constants in bytes: DrawConstants (graphics) and PassConstants (compute).
 #define ARBOR_DRAW_CONSTANTS_BYTES 80

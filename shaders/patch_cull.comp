@@ -71,7 +71,9 @@ void main() {
     factor = uvec4(edgeFactor(c0, c3), edgeFactor(c0, c1), edgeFactor(c1, c2), edgeFactor(c3, c2));
   }
   uint largest = max(max(factor.x, factor.y), max(factor.z, factor.w));
-  uint bucket = (pass.flags & kBuckets) == 0u || largest <= 1u ? 0u : uint(findMSB(largest - 1u)) + 1u;
+  uint bucket = largest <= 1u && (pass.flags & kCornerBucket) != 0u ? 0u
+                : (pass.flags & kBuckets) == 0u                    ? 1u
+                                                                   : uint(findMSB(max(largest, 2u) - 1u)) + 1u;
   uint slot = atomicAdd(counts[pass.counterBase + bucket], 1u);
   visible[pass.listBase + bucket * pass.primitiveCount + slot] =
       uvec2(primitive, factor.x | (factor.y << 8) | (factor.z << 16) | (factor.w << 24));

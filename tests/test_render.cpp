@@ -145,6 +145,8 @@ TEST_CASE("the side of the trunk facing the sun is the bright one, in every mode
 
 TEST_CASE("splitting the tree into draws does not change the picture", "[render]") {
   // Lavapipe garbles draws beyond its limits (docs/rendering.md); the automatic split must match tiny draws.
+  // The tiny draws all go through the tessellator, so at factor 1 this also holds the corner pipeline (factor-1
+  // patches drawn without it) to the tessellator's picture.
   const TreeMesh tree = test::meshOf("quaking-aspen", 1, 3);
   const PatchSet patches = buildPatches(tree.mesh);
   REQUIRE(patches.size() > 20000);
@@ -160,10 +162,13 @@ TEST_CASE("splitting the tree into draws does not change the picture", "[render]
       const render::FrameResult automatic = session.render(camera, settings);
       const Image whole = session.image();
       settings.patchesPerDraw = 500;
+      settings.cornerPatches = false;
       const render::FrameResult small = session.render(camera, settings);
       CHECK(small.gpu.draws > automatic.gpu.draws);
       CHECK(automatic.gpu.triangles == small.gpu.triangles);
-      CHECK(compareImages(whole, session.image(), 0).pixelsOverThreshold == 0);
+      // At factor 1 the two pictures come from different stages (a vertex shader, the tessellator's triangles):
+      // the same points, but a pixel's colour may round differently.
+      CHECK(compareImages(whole, session.image(), level == 1.0f ? 3 : 0).pixelsOverThreshold == 0);
     }
   }
 }

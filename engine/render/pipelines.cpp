@@ -188,7 +188,10 @@ void createComputeLayouts(VkDevice device, Pipelines& p) {
 
 void Pipelines::destroy(VkDevice device) {
   std::vector<VkPipeline> all{sky, ground, leaves, impostors, ceiling, lines, cull, drawCommands};
-  for (const ModePipelines& m : modes) all.insert(all.end(), {m.fill, m.wireframe, m.twoSided, m.build});
+  for (const ModePipelines& m : modes) {
+    all.insert(all.end(), {m.surface.fill, m.surface.wireframe, m.surface.twoSided, m.corners.fill, m.corners.wireframe,
+                           m.corners.twoSided, m.build});
+  }
   for (VkPipeline p : all) {
     if (p) vkDestroyPipeline(device, p, nullptr);
   }
@@ -216,12 +219,13 @@ Pipelines createPipelines(const vk::VulkanContext& context, VkRenderPass renderP
   const std::array<VkDescriptorSetLayoutBinding, 9> bindings{{
       {ARBOR_BINDING_SCENE, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, all, nullptr},
       {ARBOR_BINDING_BARK_COLOR, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
-      {ARBOR_BINDING_BARK_HEIGHT, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, evaluation | VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
+      {ARBOR_BINDING_BARK_HEIGHT, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_VERTEX_BIT | evaluation | VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
       {ARBOR_BINDING_CAPTURE, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, evaluation, nullptr},
       {ARBOR_BINDING_LEAVES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, pointStages, nullptr},
       {ARBOR_BINDING_LEAF_ATLAS, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
       {ARBOR_BINDING_IMPOSTORS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, pointStages, nullptr},
-      {ARBOR_BINDING_CONTROL, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, evaluation, nullptr},
+      {ARBOR_BINDING_CONTROL, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1,
+       VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT | evaluation, nullptr},
       {ARBOR_BINDING_VISIBLE, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT, nullptr},
   }};
   VkDescriptorSetLayoutCreateInfo setInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
@@ -258,6 +262,20 @@ Pipelines createPipelines(const vk::VulkanContext& context, VkRenderPass renderP
   createComputeLayouts(device, p);
   p.cull = buildCompute(device, p.computeLayout, stage(VK_SHADER_STAGE_COMPUTE_BIT, spirv_patch_cull_comp));
   p.drawCommands = buildCompute(device, p.computeLayout, stage(VK_SHADER_STAGE_COMPUTE_BIT, spirv_draw_commands_comp));
+  auto surface = [&](const PipelineSpec& spec) {
+    SurfacePipelines s;
+    s.fill = build(device, renderPass, p.layout, samples, spec);
+    PipelineSpec twoSided = spec;
+    twoSided.cullBack = false;
+    s.twoSided = build(device, renderPass, p.layout, samples, twoSided);
+    if (context.features().fillModeNonSolid) {
+      PipelineSpec wire = spec;
+      wire.wireframe = true;
+      wire.cullBack = false;
+      s.wireframe = build(device, renderPass, p.layout, samples, wire);
+    }
+    return s;
+  };
   for (const RenderModeInfo& info : renderModes()) {
     ModePipelines& m = p.modes[static_cast<std::size_t>(info.mode)];
     PipelineSpec spec{{stage(VK_SHADER_STAGE_VERTEX_BIT, info.vertex), treeFrag}};
@@ -268,17 +286,9 @@ Pipelines createPipelines(const vk::VulkanContext& context, VkRenderPass renderP
                                                    stage(VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, info.evaluation)});
       spec.patchPoints = 1;  // the patch's entry in this frame's list; its points come from the control buffer
       m.build = buildCompute(device, p.computeLayout, stage(VK_SHADER_STAGE_COMPUTE_BIT, info.build));
+      m.corners = surface(PipelineSpec{{stage(VK_SHADER_STAGE_VERTEX_BIT, info.corners), treeFrag}});
     }
-    m.fill = build(device, renderPass, p.layout, samples, spec);
-    PipelineSpec twoSided = spec;
-    twoSided.cullBack = false;
-    m.twoSided = build(device, renderPass, p.layout, samples, twoSided);
-    if (context.features().fillModeNonSolid) {
-      PipelineSpec wire = spec;
-      wire.wireframe = true;
-      wire.cullBack = false;
-      m.wireframe = build(device, renderPass, p.layout, samples, wire);
-    }
+    m.surface = surface(spec);
   }
   if (geometry) {
     const auto points = stage(VK_SHADER_STAGE_VERTEX_BIT, spirv_point_vert);

@@ -10,12 +10,18 @@
 
 namespace arbor::render {
 
-// One render mode's pipelines.
-struct ModePipelines {
+// A surface pipeline filled, as wireframe and two-sided.
+struct SurfacePipelines {
   VkPipeline fill = VK_NULL_HANDLE;
   VkPipeline wireframe = VK_NULL_HANDLE;  // null where the device has no fillModeNonSolid
   VkPipeline twoSided = VK_NULL_HANDLE;   // no culling: back faces seen through cracks show (crack tests)
-  VkPipeline build = VK_NULL_HANDLE;      // compute: control points once per mesh (tessellated modes)
+};
+
+// One render mode's pipelines.
+struct ModePipelines {
+  SurfacePipelines surface;
+  SurfacePipelines corners;           // tessellated modes: patches at factor 1 without the tessellator
+  VkPipeline build = VK_NULL_HANDLE;  // compute: control points once per mesh (tessellated modes)
 };
 
 struct Pipelines {
@@ -47,7 +53,7 @@ struct PassConstants {
   float model[16];
   std::uint32_t primitiveCount;  // patches or triangles
   std::uint32_t listBase;        // first entry of the instance's lists (bucket b at listBase + b * primitiveCount)
-  std::uint32_t counterBase;     // first of its ARBOR_BUCKETS + 1 counters
+  std::uint32_t counterBase;     // first of its ARBOR_COUNTERS counters
   std::uint32_t commandBase;     // first of its draw commands
   std::uint32_t flags;           // PassFlag bits
   std::uint32_t maxCommands;
@@ -58,7 +64,7 @@ static_assert(sizeof(PassConstants) == ARBOR_PASS_CONSTANTS_BYTES, "compute.glsl
 static_assert(ARBOR_BUCKETS <= 8, "PassConstants::perDraw holds eight buckets");
 
 // compute.glsl's pass flags.
-enum PassFlag : std::uint32_t { kCullFrustum = 1, kCullBackFaces = 2, kBucketed = 4, kZeroFill = 8, kTriangles = 16 };
+enum PassFlag : std::uint32_t { kCullFrustum = 1, kCullBackFaces = 2, kBucketed = 4, kZeroFill = 8, kTriangles = 16, kCornerBucket = 32 };
 
 // One end of a wireframe line: object-space position (w unused) and colour (a unused); 32 bytes.
 struct LineVertex {

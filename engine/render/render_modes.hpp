@@ -28,6 +28,8 @@ struct RenderModeInfo {
   std::uint32_t controlVec4s;  // control record per patch (interface.h); 0 for untessellated modes
   SpirvCode vertex, control, evaluation;  // control and evaluation empty when untessellated
   SpirvCode build;           // compute: control points once per mesh (tessellated modes)
+  SpirvCode corners;         // vertex: patches whose factors are all 1, drawn without the tessellator
+  std::uint32_t cornerVertices;  // vertices per such patch (two triangles for a quad)
 };
 
 constexpr std::size_t kRenderModeCount = 3;

@@ -34,7 +34,7 @@ constexpr std::uint32_t kCaptureHeader = 16;  // count, capacity, two words of p
 constexpr std::uint32_t kCaptureEntryBytes = 48;  // three vec4: patch and (u, v), point, displaced point
 constexpr std::uint32_t kTimestampCount = 2;
 constexpr std::uint32_t kLavapipeInputVerticesPerDraw = 4096;  // beyond it lavapipe garbles patches (one vertex each)
-constexpr std::uint32_t kCounters = ARBOR_BUCKETS + 1;           // per instance: one per bucket, then the draws
+constexpr std::uint32_t kCounters = ARBOR_COUNTERS;
 
 std::uint32_t bit(bool on, PassFlag flag) { return on ? static_cast<std::uint32_t>(flag) : 0u; }
 
@@ -253,20 +253,25 @@ std::vector<PatchDraw> TreeRenderer::inspectDraws() const {
   const auto* counts = static_cast<const std::uint32_t*>(countsReadback_.mapped());
   const auto* commands = static_cast<const std::uint32_t*>(commands_.mapped());
   const auto* entries = static_cast<const std::uint32_t*>(visible_.mapped());
+  // The corner draw counts vertices (a quad's 6, a triangle's 3 per patch), the tessellated ones patches.
+  const std::uint32_t cornerVertices = renderModeInfo(lastMode_).cornerVertices;
   for (std::size_t i = 0; i < planOf_.size(); ++i) {
     if (planOf_[i] < 0) continue;
     const InstancePlan& plan = plans_[static_cast<std::size_t>(planOf_[i])];
-    const std::uint32_t written = counts[plan.counterBase + ARBOR_BUCKETS];
-    for (std::uint32_t c = 0; c < written; ++c) {
-      const std::uint32_t* command = commands + 4 * (plan.commandBase + c);
+    auto add = [&](const std::uint32_t* command, bool tessellated) {
       PatchDraw draw;
       draw.instance = static_cast<std::uint32_t>(i);
-      for (std::uint32_t k = 0; k < command[0]; ++k) {
-        const std::uint32_t* entry = entries + 2 * (command[2] + k);
+      draw.tessellated = tessellated;
+      const std::uint32_t patches = tessellated ? command[0] : command[0] / cornerVertices;
+      const std::uint32_t first = tessellated ? command[2] : command[2] / cornerVertices;
+      for (std::uint32_t k = 0; k < patches; ++k) {
+        const std::uint32_t* entry = entries + 2 * (first + k);
         draw.patches.push_back({entry[0], {entry[1] & 0xffu, (entry[1] >> 8) & 0xffu, (entry[1] >> 16) & 0xffu, entry[1] >> 24}});
       }
       draws.push_back(std::move(draw));
-    }
+    };
+    if (counts[plan.counterBase + ARBOR_BUCKETS] > 0) add(commands + 4 * plan.commandBase, false);
+    for (std::uint32_t c = 0; c < counts[plan.counterBase + ARBOR_BUCKETS + 1]; ++c) add(commands + 4 * (plan.commandBase + 1 + c), true);
   }
   return draws;
 }
@@ -275,7 +280,7 @@ TreeRenderer::DrawSizes TreeRenderer::drawSizes(const RenderSettings& settings) 
   DrawSizes sizes;
   sizes.perDraw.fill(1u << 30);
   if (settings.patchesPerDraw > 0) {
-    sizes.perDraw[0] = settings.patchesPerDraw;
+    sizes.perDraw.fill(settings.patchesPerDraw);
     return sizes;
   }
   if (!context_.isLavapipe() || !isTessellated(settings.mode)) return sizes;
@@ -285,12 +290,12 @@ TreeRenderer::DrawSizes TreeRenderer::drawSizes(const RenderSettings& settings) 
     return std::max(1u, std::min(kLavapipeInputVerticesPerDraw, 65535u / verticesPerPatch(settings.mode, level)));
   };
   if (settings.adaptivePixels <= 0.0f || settings.ceiling) {
-    sizes.perDraw[0] = perDraw(settings.tessLevel);  // one factor: one bucket sized for it
+    sizes.perDraw.fill(perDraw(settings.tessLevel));  // one factor: every draw sized for it
   } else if (!settings.bucketed) {
-    sizes.perDraw[0] = perDraw(settings.maxLevel);  // every draw sized for the largest factor allowed
+    sizes.perDraw.fill(perDraw(settings.maxLevel));  // every draw sized for the largest factor allowed
   } else {
-    sizes.buckets = ARBOR_BUCKETS;
-    for (std::uint32_t b = 0; b < sizes.buckets; ++b) sizes.perDraw[b] = perDraw(static_cast<float>(1u << b));
+    sizes.bucketed = true;
+    for (std::uint32_t b = 1; b < ARBOR_BUCKETS; ++b) sizes.perDraw[b] = perDraw(static_cast<float>(1u << b));
   }
   return sizes;
 }
@@ -377,7 +382,7 @@ void TreeRenderer::beginFrame(VkCommandBuffer cmd, const Camera& camera, VkExten
   const bool quads = renderModeInfo(s.mode).primitive == PatchPrimitive::Quad;
   plans_.clear();
   planOf_.assign(instances.size(), -1);
-  planBuckets_ = sizes.buckets;
+  lastMode_ = s.mode;
   std::size_t entries = 0, commands = 0;
   for (std::size_t i = 0; i < instances.size(); ++i) {
     if (instances[i].tree >= trees_.size()) throw std::out_of_range("tree instance names tree " + std::to_string(instances[i].tree));
@@ -388,9 +393,11 @@ void TreeRenderer::beginFrame(VkCommandBuffer cmd, const Camera& camera, VkExten
     plan.listBase = static_cast<std::uint32_t>(entries);
     plan.counterBase = static_cast<std::uint32_t>(plans_.size() * kCounters);
     plan.commandBase = static_cast<std::uint32_t>(commands);
-    for (std::uint32_t b = 0; b < sizes.buckets; ++b) plan.maxCommands += (plan.primitives + sizes.perDraw[b] - 1) / sizes.perDraw[b];
-    entries += static_cast<std::size_t>(plan.primitives) * sizes.buckets;
-    commands += plan.maxCommands;
+    for (std::uint32_t b = sizes.bucketed ? 1 : ARBOR_BUCKETS - 1; b < ARBOR_BUCKETS; ++b) {
+      plan.maxCommands += (plan.primitives + sizes.perDraw[b] - 1) / sizes.perDraw[b];
+    }
+    entries += static_cast<std::size_t>(plan.primitives) * ARBOR_BUCKETS;
+    commands += 1 + plan.maxCommands;  // the corner draw, then the tessellated ones
     if (entries > 0xffffffffu || commands > 0xffffffffu) throw std::runtime_error("the scene has more patches than one frame's lists index");
     planOf_[i] = static_cast<int>(plans_.size());
     plans_.push_back(plan);
@@ -434,8 +441,11 @@ void TreeRenderer::beginFrame(VkCommandBuffer cmd, const Camera& camera, VkExten
           VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
   // Back faces stay when displacement may turn them towards the eye, and when the crack test wants them seen.
   const bool backFaces = s.cull && s.displacement == 0.0f && !s.revealBackFaces;
-  const std::uint32_t flags = bit(s.cull, kCullFrustum) | bit(backFaces, kCullBackFaces) | bit(sizes.buckets > 1, kBucketed) |
-                              bit(context_.drawIndirectCount() == nullptr, kZeroFill) | bit(!quads, kTriangles);
+  // Factor-1 patches skip the tessellator, except where the tessellator itself is measured or its points captured.
+  const bool corners = s.cornerPatches && !s.ceiling && captureCapacity_ == 0;
+  const std::uint32_t flags = bit(s.cull, kCullFrustum) | bit(backFaces, kCullBackFaces) | bit(sizes.bucketed, kBucketed) |
+                              bit(context_.drawIndirectCount() == nullptr, kZeroFill) | bit(!quads, kTriangles) |
+                              bit(corners, kCornerBucket);
   auto passFor = [&](std::size_t i, const InstancePlan& plan) {
     PassConstants pass{};
     std::memcpy(pass.model, glm::value_ptr(instances[i].model), sizeof pass.model);
@@ -520,13 +530,11 @@ void TreeRenderer::draw(VkCommandBuffer cmd, VkExtent2D extent, const RenderSett
     const int planIndex = planOf_[i];
     const RenderMode drawn = planIndex >= 0 ? s.mode : RenderMode::Flat;
     const ModePipelines& mode = pipelines_.modes[static_cast<std::size_t>(drawn)];
-    const VkPipeline pipeline = wire ? mode.wireframe
-                                : s.ceiling && planIndex >= 0 ? pipelines_.ceiling
-                                : s.revealBackFaces ? mode.twoSided
-                                                    : mode.fill;
-    if (!pipeline) return;
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
+    auto pick = [&](const SurfacePipelines& p) { return wire ? p.wireframe : s.revealBackFaces ? p.twoSided : p.fill; };
     if (planIndex < 0) {
+      const VkPipeline pipeline = pick(mode.surface);
+      if (!pipeline) return;
+      vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
       const VkDeviceSize offset = 0;
       const bool far = isTessellated(s.mode) && tree.farVertices.handle() != VK_NULL_HANDLE;
       const VkBuffer vertices = far ? tree.farVertices.handle() : tree.vertices.handle();
@@ -537,17 +545,24 @@ void TreeRenderer::draw(VkCommandBuffer cmd, VkExtent2D extent, const RenderSett
       return;
     }
     const InstancePlan& plan = plans_[static_cast<std::size_t>(planIndex)];
-    const VkDeviceSize commandOffset = VkDeviceSize{plan.commandBase} * ARBOR_DRAW_COMMAND_BYTES;
-    if (const PFN_vkCmdDrawIndirectCountKHR drawCount = context_.drawIndirectCount()) {
-      drawCount(cmd, commands_.handle(), commandOffset, counts_.handle(), (plan.counterBase + ARBOR_BUCKETS) * sizeof(std::uint32_t),
-                plan.maxCommands, ARBOR_DRAW_COMMAND_BYTES);
-    } else if (context_.features().multiDrawIndirect) {
-      vkCmdDrawIndirect(cmd, commands_.handle(), commandOffset, plan.maxCommands, ARBOR_DRAW_COMMAND_BYTES);  // padded with empty draws
-    } else {
-      for (std::uint32_t c = 0; c < plan.maxCommands; ++c) {
-        vkCmdDrawIndirect(cmd, commands_.handle(), commandOffset + VkDeviceSize{c} * ARBOR_DRAW_COMMAND_BYTES, 1, ARBOR_DRAW_COMMAND_BYTES);
+    // `slot`: the counter holding how many of the `most` commands from `first` the culling pass wrote.
+    auto drawIndirect = [&](VkPipeline pipeline, std::uint32_t first, std::uint32_t slot, std::uint32_t most) {
+      if (!pipeline) return;
+      vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
+      const VkDeviceSize offset = VkDeviceSize{first} * ARBOR_DRAW_COMMAND_BYTES;
+      if (const PFN_vkCmdDrawIndirectCountKHR drawCount = context_.drawIndirectCount()) {
+        drawCount(cmd, commands_.handle(), offset, counts_.handle(), slot * sizeof(std::uint32_t), most, ARBOR_DRAW_COMMAND_BYTES);
+      } else if (context_.features().multiDrawIndirect) {
+        vkCmdDrawIndirect(cmd, commands_.handle(), offset, most, ARBOR_DRAW_COMMAND_BYTES);  // padded with empty draws
+      } else {
+        for (std::uint32_t c = 0; c < most; ++c) {
+          vkCmdDrawIndirect(cmd, commands_.handle(), offset + VkDeviceSize{c} * ARBOR_DRAW_COMMAND_BYTES, 1, ARBOR_DRAW_COMMAND_BYTES);
+        }
       }
-    }
+    };
+    if (!s.ceiling) drawIndirect(pick(mode.corners), plan.commandBase, plan.counterBase + ARBOR_BUCKETS, 1);
+    drawIndirect(s.ceiling && !wire ? pipelines_.ceiling : pick(mode.surface), plan.commandBase + 1, plan.counterBase + ARBOR_BUCKETS + 1,
+                 plan.maxCommands);
   };
   auto drawPoints = [&](VkPipeline pipeline, std::uint32_t count, std::uint32_t first = 0) {
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
@@ -600,7 +615,7 @@ FrameStats TreeRenderer::stats() const {
       for (std::uint32_t b = 0; b < ARBOR_BUCKETS; ++b) drawn += counts[plan.counterBase + b];
       f.patchesDrawn += drawn;
       f.patchesCulled += plan.primitives - drawn;
-      f.draws += counts[plan.counterBase + ARBOR_BUCKETS];
+      f.draws += counts[plan.counterBase + ARBOR_BUCKETS] + counts[plan.counterBase + ARBOR_BUCKETS + 1];
     }
   }
   const VkDevice device = context_.device();

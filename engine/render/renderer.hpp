@@ -35,6 +35,7 @@ struct RenderSettings {
   bool ground = true;
   bool cull = true;              // skip patches outside the view, and (undisplaced) those facing away
   bool bucketed = true;          // size each draw for its patches' own factors (false: all for the largest)
+  bool cornerPatches = true;     // patches whose factors are all 1 skip the tessellator (the same picture)
   bool leaves = false;            // draw the leaves (needs geometry shaders)
   float leafDensity = 1.0f;       // share of the leaves drawn (0..1), the first of the random order
   float leafLodDistance = 0.0f;   // > 0: all leaves up to this distance (m), then thinning with distance squared
@@ -68,6 +69,7 @@ struct CapturedPoint {
 // One indirect draw of the last frame and the patches it drew (tests): patch index and outer factors.
 struct PatchDraw {
   std::uint32_t instance = 0;
+  bool tessellated = true;  // false: the draw of factor-1 patches without the tessellator
   std::vector<std::pair<std::uint32_t, std::array<std::uint32_t, 4>>> patches;
 };
 
@@ -117,8 +119,8 @@ class TreeRenderer {
   // Patches per draw in each bucket, and how many buckets: lavapipe wraps its 16-bit indices beyond 65535
   // tessellated vertices and garbles patches beyond 4096 input vertices per draw; other devices take one draw.
   struct DrawSizes {
-    std::uint32_t buckets = 1;
-    std::array<std::uint32_t, 8> perDraw{};
+    bool bucketed = false;                // by largest factor; else every tessellated patch in bucket 1
+    std::array<std::uint32_t, 8> perDraw{};  // buckets 1 and up (bucket 0 is one draw without the tessellator)
   };
   DrawSizes drawSizes(const RenderSettings& settings) const;
 
@@ -159,8 +161,8 @@ class TreeRenderer {
   std::uint64_t frameGeneration_ = 0;  // bumped when those buffers are reallocated
   bool inspect_ = false;
   std::vector<InstancePlan> plans_;
-  std::vector<int> planOf_;  // per instance of the frame: its plan, or -1 when drawn untessellated
-  std::uint32_t planBuckets_ = 1;
+  std::vector<int> planOf_;
+  RenderMode lastMode_ = RenderMode::ACC;  // per instance of the frame: its plan, or -1 when drawn untessellated
   std::uint32_t lastDraws_ = 0;
   bool drewTree_ = false;
 };
