@@ -247,6 +247,21 @@ void TreeRenderer::setInspection(bool on) {
   ensureFrameBuffers(visible_.size() / 8, counts_.size() / 4, commands_.size() / ARBOR_DRAW_COMMAND_BYTES);
 }
 
+std::vector<glm::vec4> TreeRenderer::readControl(const GpuTree& tree, RenderMode mode, bool hulls) const {
+  const auto found = controls_.find(tree.id);
+  if (found == controls_.end()) return {};
+  const vk::Buffer& source = (hulls ? found->second.hulls : found->second.control)[static_cast<std::size_t>(mode)];
+  if (source.handle() == VK_NULL_HANDLE) return {};
+  const vk::Buffer staging = vk::hostBuffer(context_, source.size(), VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+  context_.submitAndWait([&](VkCommandBuffer cmd) {
+    const VkBufferCopy copy{0, 0, source.size()};
+    vkCmdCopyBuffer(cmd, source.handle(), staging.handle(), 1, &copy);
+  });
+  std::vector<glm::vec4> records(source.size() / sizeof(glm::vec4));
+  std::memcpy(records.data(), staging.mapped(), records.size() * sizeof(glm::vec4));
+  return records;
+}
+
 std::vector<PatchDraw> TreeRenderer::inspectDraws() const {
   std::vector<PatchDraw> draws;
   if (!inspect_) throw std::logic_error("inspectDraws needs setInspection(true) before the frame");
@@ -414,7 +429,7 @@ void TreeRenderer::beginFrame(VkCommandBuffer cmd, const Camera& camera, VkExten
     TreeControl& c = controls_[tree.id];
     const bool missing = c.control[m].handle() == VK_NULL_HANDLE;
     if (missing) {
-      const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+      const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
       c.control[m] = vk::Buffer(context_, std::size_t{plan.primitives} * renderModeInfo(controlMode).controlVec4s * 16, storage,
                                 VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
       c.hulls[m] = vk::Buffer(context_, std::size_t{plan.primitives} * ARBOR_HULL_VEC4S * 16, storage, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);

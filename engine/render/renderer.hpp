@@ -99,6 +99,10 @@ class TreeRenderer {
   void setCapture(std::uint32_t capacity);
   std::vector<CapturedPoint> captured() const;
 
+  // A tree's control records (interface.h) for `mode`, or with `hulls` its culling hulls, read back from the GPU
+  // (tests); empty until a frame has drawn the tree in that mode.
+  std::vector<glm::vec4> readControl(const GpuTree& tree, RenderMode mode, bool hulls = false) const;
+
   // Keeps this frame's patch lists and draw commands readable by the host (tests; slower on discrete GPUs).
   void setInspection(bool on);
   // With inspection on, after the frame completed: every indirect draw of the last frame with its patches.
