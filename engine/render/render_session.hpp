@@ -15,6 +15,9 @@ struct FrameResult {
 
 class RenderSession {
  public:
+  ~RenderSession();
+  RenderSession(const RenderSession&) = delete;
+  RenderSession& operator=(const RenderSession&) = delete;
   RenderSession(const vk::VulkanContext& context, std::uint32_t width, std::uint32_t height, VkSampleCountFlagBits samples,
                 const TreeTextures& textures);
 
@@ -24,6 +27,11 @@ class RenderSession {
   FrameResult render(const Camera& camera, const RenderSettings& settings);
   // The renderer's trees (set with renderer().setTrees) at these places: a forest.
   FrameResult render(const Camera& camera, const RenderSettings& settings, const std::vector<TreeInstance>& instances);
+  // `frames` frames of one view with TreeRenderer::kFramesInFlight of them in flight, as a viewer runs them
+  // (the benchmark): per frame, the host's time from one frame's completion to the next's, in ms; `last`
+  // gets the last frame's figures. The target's image is not read back.
+  std::vector<double> renderInFlight(const Camera& camera, const RenderSettings& settings, const std::vector<TreeInstance>& instances,
+                                     int frames, FrameResult& last);
   Image image() const { return target_.readback(); }
   TreeRenderer& renderer() { return renderer_; }
   VkExtent2D extent() const { return target_.extent(); }
@@ -33,6 +41,8 @@ class RenderSession {
   OffscreenTarget target_;
   TreeRenderer renderer_;
   std::unique_ptr<GpuTree> tree_;
+  std::array<VkCommandBuffer, TreeRenderer::kFramesInFlight> commands_{};
+  std::array<VkFence, TreeRenderer::kFramesInFlight> fences_{};
 };
 
 // The project's textures from assets/textures (made by `arbor textures`).

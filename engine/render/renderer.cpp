@@ -70,50 +70,54 @@ TreeRenderer::TreeRenderer(const vk::VulkanContext& context, VkRenderPass render
   // Coarse MIP levels average a cutout's alpha below the leaf shader's test and whole leaves would vanish with
   // distance: the atlas stops at the level where the blades still hold their shape.
   leafSampler_ = vk::createRepeatSampler(context, 3.0f, false);  // clamped + anisotropic: lavapipe minutes/frame
-  scene_ = vk::hostBuffer(context, sizeof(SceneUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+  for (FrameSlot& frame : slots_) frame.scene = vk::hostBuffer(context, sizeof(SceneUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
   setCapture(0);
 
   const VkDevice device = context.device();
-  const std::array<VkDescriptorPoolSize, 3> sizes{{{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kMaxTrees},
-                                                   {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 5 * kMaxTrees},
-                                                   {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 3 * kMaxTrees}}};
+  constexpr std::uint32_t kSets = kMaxTrees * kFramesInFlight;
+  const std::array<VkDescriptorPoolSize, 3> sizes{{{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kSets},
+                                                   {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 5 * kSets},
+                                                   {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 3 * kSets}}};
   VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
-  poolInfo.maxSets = kMaxTrees;
+  poolInfo.maxSets = kMaxTrees * kFramesInFlight;
   poolInfo.poolSizeCount = static_cast<std::uint32_t>(sizes.size());
   poolInfo.pPoolSizes = sizes.data();
   vk::check(vkCreateDescriptorPool(device, &poolInfo, nullptr, &pool_), "vkCreateDescriptorPool");
   // Compute sets come and go with the trees (one per distinct tree shown).
-  const std::array<VkDescriptorPoolSize, 2> computeSizes{{{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kMaxTrees},
-                                                          {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, (ARBOR_COMPUTE_BINDINGS - 1) * kMaxTrees}}};
+  const std::array<VkDescriptorPoolSize, 2> computeSizes{{{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kSets},
+                                                          {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, (ARBOR_COMPUTE_BINDINGS - 1) * kSets}}};
   VkDescriptorPoolCreateInfo computePoolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
   computePoolInfo.flags = VK_DESCRIPTOR_POOL_CREATE_FREE_DESCRIPTOR_SET_BIT;
-  computePoolInfo.maxSets = kMaxTrees;
+  computePoolInfo.maxSets = kSets;
   computePoolInfo.poolSizeCount = static_cast<std::uint32_t>(computeSizes.size());
   computePoolInfo.pPoolSizes = computeSizes.data();
   vk::check(vkCreateDescriptorPool(device, &computePoolInfo, nullptr, &computePool_), "vkCreateDescriptorPool");
-  ensureFrameBuffers(1, kCounters, 1);
+  for (FrameSlot& frame : slots_) {
+    ensureFrameBuffers(frame, 1, kCounters, 1);
+    if (context.features().pipelineStatisticsQuery) {
+      VkQueryPoolCreateInfo q{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
+      q.queryType = VK_QUERY_TYPE_PIPELINE_STATISTICS;
+      q.queryCount = 1;
+      q.pipelineStatistics = VK_QUERY_PIPELINE_STATISTIC_CLIPPING_PRIMITIVES_BIT;
+      vk::check(vkCreateQueryPool(device, &q, nullptr, &frame.statistics), "vkCreateQueryPool");
+    }
+    if (context.properties().limits.timestampComputeAndGraphics) {
+      VkQueryPoolCreateInfo q{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
+      q.queryType = VK_QUERY_TYPE_TIMESTAMP;
+      q.queryCount = kTimestampCount;
+      vk::check(vkCreateQueryPool(device, &q, nullptr, &frame.timestamps), "vkCreateQueryPool");
+    }
+  }
   setTree(nullptr);
-
-  if (context.features().pipelineStatisticsQuery) {
-    VkQueryPoolCreateInfo q{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
-    q.queryType = VK_QUERY_TYPE_PIPELINE_STATISTICS;
-    q.queryCount = 1;
-    q.pipelineStatistics = VK_QUERY_PIPELINE_STATISTIC_CLIPPING_PRIMITIVES_BIT;
-    vk::check(vkCreateQueryPool(device, &q, nullptr, &statistics_), "vkCreateQueryPool");
-  }
-  if (context.properties().limits.timestampComputeAndGraphics) {
-    VkQueryPoolCreateInfo q{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
-    q.queryType = VK_QUERY_TYPE_TIMESTAMP;
-    q.queryCount = kTimestampCount;
-    vk::check(vkCreateQueryPool(device, &q, nullptr, &timestamps_), "vkCreateQueryPool");
-  }
 }
 
 TreeRenderer::~TreeRenderer() {
   const VkDevice device = context_.device();
   vkDeviceWaitIdle(device);
-  if (statistics_) vkDestroyQueryPool(device, statistics_, nullptr);
-  if (timestamps_) vkDestroyQueryPool(device, timestamps_, nullptr);
+  for (FrameSlot& frame : slots_) {
+    if (frame.statistics) vkDestroyQueryPool(device, frame.statistics, nullptr);
+    if (frame.timestamps) vkDestroyQueryPool(device, frame.timestamps, nullptr);
+  }
   vkDestroyDescriptorPool(device, pool_, nullptr);
   vkDestroyDescriptorPool(device, computePool_, nullptr);
   vkDestroySampler(device, sampler_, nullptr);
@@ -122,12 +126,13 @@ TreeRenderer::~TreeRenderer() {
 }
 
 void TreeRenderer::setCapture(std::uint32_t capacity) {
+  vkDeviceWaitIdle(context_.device());  // frames in flight may write the old buffer
   captureCapacity_ = capacity;
   capture_ = vk::hostBuffer(context_, kCaptureHeader + static_cast<std::size_t>(std::max(capacity, 1u)) * kCaptureEntryBytes,
                             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
   std::memset(capture_.mapped(), 0, kCaptureHeader);
   static_cast<std::uint32_t*>(capture_.mapped())[1] = capacity;
-  if (!sets_.empty()) setTrees(trees_);
+  if (!slots_[0].sets.empty()) setTrees(trees_);
 }
 
 std::vector<CapturedPoint> TreeRenderer::captured() const {
@@ -151,36 +156,40 @@ void TreeRenderer::setTrees(const std::vector<const GpuTree*>& trees) {
   if (trees.size() > kMaxTrees) {
     throw std::runtime_error("a scene may hold at most " + std::to_string(kMaxTrees) + " distinct trees, not " + std::to_string(trees.size()));
   }
+  vkDeviceWaitIdle(context_.device());  // frames in flight read the sets rewritten here
   trees_ = trees;
   // Control points of trees no longer shown go (their GpuTree may be gone); the others stay built.
   for (auto it = controls_.begin(); it != controls_.end();) {
     const bool kept = std::any_of(trees.begin(), trees.end(), [&](const GpuTree* t) { return t && t->id == it->first; });
     if (kept) {
-      it->second.boundMode = -1;  // the tree's graphics set is rewritten below
+      it->second.boundMode.fill(-1);  // the tree's graphics sets are rewritten below
       ++it;
       continue;
     }
-    vkDeviceWaitIdle(context_.device());  // a frame still in flight may read them
-    if (it->second.computeSet) vkFreeDescriptorSets(context_.device(), computePool_, 1, &it->second.computeSet);
+    for (VkDescriptorSet set : it->second.computeSet) {
+      if (set) vkFreeDescriptorSets(context_.device(), computePool_, 1, &set);
+    }
     it = controls_.erase(it);
   }
   const std::size_t wanted = std::max<std::size_t>(1, trees.size());  // sky and ground need a set without trees too
-  while (sets_.size() < wanted) {
-    VkDescriptorSetAllocateInfo alloc{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
-    alloc.descriptorPool = pool_;
-    alloc.descriptorSetCount = 1;
-    alloc.pSetLayouts = &pipelines_.setLayout;
-    VkDescriptorSet set = VK_NULL_HANDLE;
-    vk::check(vkAllocateDescriptorSets(context_.device(), &alloc, &set), "vkAllocateDescriptorSets");
-    sets_.push_back(set);
+  for (FrameSlot& frame : slots_) {
+    while (frame.sets.size() < wanted) {
+      VkDescriptorSetAllocateInfo alloc{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+      alloc.descriptorPool = pool_;
+      alloc.descriptorSetCount = 1;
+      alloc.pSetLayouts = &pipelines_.setLayout;
+      VkDescriptorSet set = VK_NULL_HANDLE;
+      vk::check(vkAllocateDescriptorSets(context_.device(), &alloc, &set), "vkAllocateDescriptorSets");
+      frame.sets.push_back(set);
+    }
+    for (std::size_t i = 0; i < wanted; ++i) writeSet(frame, frame.sets[i], i < trees.size() ? trees[i] : nullptr);
   }
-  for (std::size_t i = 0; i < wanted; ++i) writeSet(sets_[i], i < trees.size() ? trees[i] : nullptr);
 }
 
-void TreeRenderer::writeSet(VkDescriptorSet set, const GpuTree* tree) {
+void TreeRenderer::writeSet(const FrameSlot& frame, VkDescriptorSet set, const GpuTree* tree) {
   // Without a tree the storage bindings still point at a valid buffer: every binding is always written.
   const VkBuffer fallback = capture_.handle();
-  const VkDescriptorBufferInfo sceneInfo{scene_.handle(), 0, VK_WHOLE_SIZE};
+  const VkDescriptorBufferInfo sceneInfo{frame.scene.handle(), 0, VK_WHOLE_SIZE};
   const VkDescriptorBufferInfo leafInfo{tree && tree->leafCount > 0 ? tree->leaves.handle() : fallback, 0, VK_WHOLE_SIZE};
   const VkDescriptorBufferInfo impostorInfo{tree && tree->impostorCount > 0 ? tree->impostors.handle() : fallback, 0, VK_WHOLE_SIZE};
   const VkDescriptorImageInfo atlasInfo{leafSampler_, leafAtlas_.view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
@@ -189,7 +198,7 @@ void TreeRenderer::writeSet(VkDescriptorSet set, const GpuTree* tree) {
   const VkDescriptorImageInfo heightInfo{sampler_, barkHeight_.view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
   // The control points are bound when a tessellated mode first draws the tree (bindControl).
   const VkDescriptorBufferInfo controlInfo{fallback, 0, VK_WHOLE_SIZE};
-  const VkDescriptorBufferInfo visibleInfo{visible_.handle(), 0, VK_WHOLE_SIZE};
+  const VkDescriptorBufferInfo visibleInfo{frame.visible.handle(), 0, VK_WHOLE_SIZE};
   auto write = [&](std::uint32_t binding, VkDescriptorType type, const VkDescriptorBufferInfo* b, const VkDescriptorImageInfo* i) {
     VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
     w.dstSet = set;
@@ -213,38 +222,40 @@ void TreeRenderer::writeSet(VkDescriptorSet set, const GpuTree* tree) {
   vkUpdateDescriptorSets(context_.device(), static_cast<std::uint32_t>(writes.size()), writes.data(), 0, nullptr);
 }
 
-void TreeRenderer::ensureFrameBuffers(std::size_t entries, std::size_t counters, std::size_t commands) {
+void TreeRenderer::ensureFrameBuffers(FrameSlot& frame, std::size_t entries, std::size_t counters, std::size_t commands) {
   const auto fits = [](const vk::Buffer& b, std::size_t bytes) { return b.handle() != VK_NULL_HANDLE && b.size() >= bytes; };
   const std::size_t entryBytes = entries * 2 * sizeof(std::uint32_t), counterBytes = counters * sizeof(std::uint32_t);
   const std::size_t commandBytes = commands * ARBOR_DRAW_COMMAND_BYTES;
-  const bool hostVisible = inspect_ == (visible_.mapped() != nullptr);
-  if (fits(visible_, entryBytes) && fits(counts_, counterBytes) && fits(commands_, commandBytes) && hostVisible) return;
-  vkDeviceWaitIdle(context_.device());  // the previous frame may still read them
-  // Half again what is asked, so that a growing forest does not reallocate every frame.
+  const bool hostVisible = inspect_ == (frame.visible.mapped() != nullptr);
+  if (fits(frame.visible, entryBytes) && fits(frame.counts, counterBytes) && fits(frame.commands, commandBytes) && hostVisible) return;
+  // Half again what is asked, so that a growing forest does not reallocate every frame. This frame's earlier
+  // use has completed (beginFrame's contract), so its buffers may go.
   const auto grown = [](std::size_t bytes) { return std::max<std::size_t>(256, bytes + bytes / 2); };
   const VkMemoryPropertyFlags memory = inspect_ ? VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT
                                                 : VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT;
   const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
-  if (!fits(visible_, entryBytes) || !hostVisible) visible_ = vk::Buffer(context_, grown(entryBytes), storage, memory);
-  if (!fits(commands_, commandBytes) || !hostVisible) {
-    commands_ = vk::Buffer(context_, grown(commandBytes), storage | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, memory);
+  if (!fits(frame.visible, entryBytes) || !hostVisible) frame.visible = vk::Buffer(context_, grown(entryBytes), storage, memory);
+  if (!fits(frame.commands, commandBytes) || !hostVisible) {
+    frame.commands = vk::Buffer(context_, grown(commandBytes), storage | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, memory);
   }
-  if (!fits(counts_, counterBytes)) {
-    counts_ = vk::Buffer(context_, grown(counterBytes), storage | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT |
-                                                            VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
-                         VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-    countsReadback_ = vk::hostBuffer(context_, counts_.size(), VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+  if (!fits(frame.counts, counterBytes)) {
+    frame.counts = vk::Buffer(context_, grown(counterBytes),
+                              storage | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                              VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+    frame.countsReadback = vk::hostBuffer(context_, frame.counts.size(), VK_BUFFER_USAGE_TRANSFER_DST_BIT);
   }
-  ++frameGeneration_;
-  if (!sets_.empty()) {
-    for (std::size_t i = 0; i < sets_.size(); ++i) writeSet(sets_[i], i < trees_.size() ? trees_[i] : nullptr);
-    for (auto& [id, control] : controls_) control.boundMode = -1;
-  }
+  ++frame.generation;
+  for (std::size_t i = 0; i < frame.sets.size(); ++i) writeSet(frame, frame.sets[i], i < trees_.size() ? trees_[i] : nullptr);
+  const auto index = static_cast<std::size_t>(&frame - slots_.data());
+  for (auto& [id, control] : controls_) control.boundMode[index] = -1;
 }
 
 void TreeRenderer::setInspection(bool on) {
+  vkDeviceWaitIdle(context_.device());
   inspect_ = on;
-  ensureFrameBuffers(visible_.size() / 8, counts_.size() / 4, commands_.size() / ARBOR_DRAW_COMMAND_BYTES);
+  for (FrameSlot& frame : slots_) {
+    ensureFrameBuffers(frame, frame.visible.size() / 8, frame.counts.size() / 4, frame.commands.size() / ARBOR_DRAW_COMMAND_BYTES);
+  }
 }
 
 std::vector<glm::vec4> TreeRenderer::readControl(const GpuTree& tree, RenderMode mode, bool hulls) const {
@@ -265,14 +276,15 @@ std::vector<glm::vec4> TreeRenderer::readControl(const GpuTree& tree, RenderMode
 std::vector<PatchDraw> TreeRenderer::inspectDraws() const {
   std::vector<PatchDraw> draws;
   if (!inspect_) throw std::logic_error("inspectDraws needs setInspection(true) before the frame");
-  const auto* counts = static_cast<const std::uint32_t*>(countsReadback_.mapped());
-  const auto* commands = static_cast<const std::uint32_t*>(commands_.mapped());
-  const auto* entries = static_cast<const std::uint32_t*>(visible_.mapped());
+  const FrameSlot& frame = slot();
+  const auto* counts = static_cast<const std::uint32_t*>(frame.countsReadback.mapped());
+  const auto* commands = static_cast<const std::uint32_t*>(frame.commands.mapped());
+  const auto* entries = static_cast<const std::uint32_t*>(frame.visible.mapped());
   // The corner draw counts vertices (a quad's 6, a triangle's 3 per patch), the tessellated ones patches.
-  const std::uint32_t cornerVertices = renderModeInfo(lastMode_).cornerVertices;
-  for (std::size_t i = 0; i < planOf_.size(); ++i) {
-    if (planOf_[i] < 0) continue;
-    const InstancePlan& plan = plans_[static_cast<std::size_t>(planOf_[i])];
+  const std::uint32_t cornerVertices = renderModeInfo(frame.mode).cornerVertices;
+  for (std::size_t i = 0; i < frame.planOf.size(); ++i) {
+    if (frame.planOf[i] < 0) continue;
+    const InstancePlan& plan = frame.plans[static_cast<std::size_t>(frame.planOf[i])];
     auto add = [&](const std::uint32_t* command, bool tessellated) {
       PatchDraw draw;
       draw.instance = static_cast<std::uint32_t>(i);
@@ -325,23 +337,25 @@ void TreeRenderer::bindControl(std::uint32_t treeIndex, RenderMode mode) {
   const GpuTree& tree = *trees_[treeIndex];
   TreeControl& c = controls_[tree.id];
   const auto m = static_cast<std::size_t>(mode);
-  if (c.boundMode == static_cast<int>(mode) && c.boundFrame == frameGeneration_) return;
-  if (!c.computeSet) {
+  const FrameSlot& frame = slot();
+  if (c.boundMode[current_] == static_cast<int>(mode) && c.boundGeneration[current_] == frame.generation) return;
+  VkDescriptorSet& computeSet = c.computeSet[current_];
+  if (!computeSet) {
     VkDescriptorSetAllocateInfo alloc{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
     alloc.descriptorPool = computePool_;
     alloc.descriptorSetCount = 1;
     alloc.pSetLayouts = &pipelines_.computeSetLayout;
-    vk::check(vkAllocateDescriptorSets(context_.device(), &alloc, &c.computeSet), "vkAllocateDescriptorSets");
+    vk::check(vkAllocateDescriptorSets(context_.device(), &alloc, &computeSet), "vkAllocateDescriptorSets");
   }
   const std::array<VkBuffer, ARBOR_COMPUTE_BINDINGS> buffers{
-      scene_.handle(), tree.vertices.handle(), tree.patches.handle(), tree.points.handle(), tree.indices.handle(),
-      c.control[m].handle(), c.hulls[m].handle(), visible_.handle(), counts_.handle(), commands_.handle()};
+      frame.scene.handle(), tree.vertices.handle(), tree.patches.handle(), tree.points.handle(), tree.indices.handle(),
+      c.control[m].handle(), c.hulls[m].handle(), frame.visible.handle(), frame.counts.handle(), frame.commands.handle()};
   std::array<VkDescriptorBufferInfo, ARBOR_COMPUTE_BINDINGS> infos{};
   std::array<VkWriteDescriptorSet, ARBOR_COMPUTE_BINDINGS + 1> writes{};
   for (std::uint32_t b = 0; b < ARBOR_COMPUTE_BINDINGS; ++b) {
     infos[b] = {buffers[b], 0, VK_WHOLE_SIZE};
     writes[b] = VkWriteDescriptorSet{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-    writes[b].dstSet = c.computeSet;
+    writes[b].dstSet = computeSet;
     writes[b].dstBinding = b;
     writes[b].descriptorCount = 1;
     writes[b].descriptorType = b == ARBOR_COMPUTE_SCENE ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
@@ -351,18 +365,23 @@ void TreeRenderer::bindControl(std::uint32_t treeIndex, RenderMode mode) {
   const VkDescriptorBufferInfo controlInfo{c.control[m].handle(), 0, VK_WHOLE_SIZE};
   VkWriteDescriptorSet& graphics = writes[ARBOR_COMPUTE_BINDINGS];
   graphics = VkWriteDescriptorSet{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-  graphics.dstSet = sets_[treeIndex];
+  graphics.dstSet = frame.sets[treeIndex];
   graphics.dstBinding = ARBOR_BINDING_CONTROL;
   graphics.descriptorCount = 1;
   graphics.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
   graphics.pBufferInfo = &controlInfo;
   vkUpdateDescriptorSets(context_.device(), static_cast<std::uint32_t>(writes.size()), writes.data(), 0, nullptr);
-  c.boundMode = static_cast<int>(mode);
-  c.boundFrame = frameGeneration_;
+  c.boundMode[current_] = static_cast<int>(mode);
+  c.boundGeneration[current_] = frame.generation;
 }
 
 void TreeRenderer::beginFrame(VkCommandBuffer cmd, const Camera& camera, VkExtent2D extent, const RenderSettings& s,
                               const std::vector<TreeInstance>& instances) {
+  // The slot this frame reuses last served kFramesInFlight frames ago, which has completed: keep its figures.
+  current_ = static_cast<std::uint32_t>(framesBegun_++ % kFramesInFlight);
+  FrameSlot& frame = slot();
+  if (frame.used) completed_ = statsOf(frame);
+  frame.used = true;
   const float aspect = static_cast<float>(extent.width) / static_cast<float>(std::max(1u, extent.height));
   SceneUniforms u{};
   u.view = viewMatrix(camera);
@@ -387,17 +406,17 @@ void TreeRenderer::beginFrame(VkCommandBuffer cmd, const Camera& camera, VkExten
   u.leafLod = glm::vec4(s.leafLodDistance, std::clamp(s.leafDensity, 0.0f, 1.0f),
                         0.0f, static_cast<float>(s.shadowLeaves));
   u.lens = glm::vec4(0.5f * static_cast<float>(extent.height) / std::tan(0.5f * camera.fovY), 0.0f, 0.0f, 0.0f);
-  std::memcpy(scene_.mapped(), &u, sizeof u);
+  std::memcpy(frame.scene.mapped(), &u, sizeof u);
   if (captureCapacity_ > 0) static_cast<std::uint32_t*>(capture_.mapped())[0] = 0;
-  if (statistics_) vkCmdResetQueryPool(cmd, statistics_, 0, 1);
-  if (timestamps_) vkCmdResetQueryPool(cmd, timestamps_, 0, kTimestampCount);
+  if (frame.statistics) vkCmdResetQueryPool(cmd, frame.statistics, 0, 1);
+  if (frame.timestamps) vkCmdResetQueryPool(cmd, frame.timestamps, 0, kTimestampCount);
 
   // Each tessellated instance gets a slice of this frame's lists: a list per bucket, counters, draw commands.
   const DrawSizes sizes = drawSizes(s);
   const bool quads = renderModeInfo(s.mode).primitive == PatchPrimitive::Quad;
-  plans_.clear();
-  planOf_.assign(instances.size(), -1);
-  lastMode_ = s.mode;
+  frame.plans.clear();
+  frame.planOf.assign(instances.size(), -1);
+  frame.mode = s.mode;
   std::size_t entries = 0, commands = 0;
   for (std::size_t i = 0; i < instances.size(); ++i) {
     if (instances[i].tree >= trees_.size()) throw std::out_of_range("tree instance names tree " + std::to_string(instances[i].tree));
@@ -406,7 +425,7 @@ void TreeRenderer::beginFrame(VkCommandBuffer cmd, const Camera& camera, VkExten
     plan.tree = instances[i].tree;
     plan.primitives = quads ? trees_[plan.tree]->patchCount : trees_[plan.tree]->triangles;
     plan.listBase = static_cast<std::uint32_t>(entries);
-    plan.counterBase = static_cast<std::uint32_t>(plans_.size() * kCounters);
+    plan.counterBase = static_cast<std::uint32_t>(frame.plans.size() * kCounters);
     plan.commandBase = static_cast<std::uint32_t>(commands);
     for (std::uint32_t b = sizes.bucketed ? 1 : ARBOR_BUCKETS - 1; b < ARBOR_BUCKETS; ++b) {
       plan.maxCommands += (plan.primitives + sizes.perDraw[b] - 1) / sizes.perDraw[b];
@@ -414,17 +433,17 @@ void TreeRenderer::beginFrame(VkCommandBuffer cmd, const Camera& camera, VkExten
     entries += static_cast<std::size_t>(plan.primitives) * ARBOR_BUCKETS;
     commands += 1 + plan.maxCommands;  // the corner draw, then the tessellated ones
     if (entries > 0xffffffffu || commands > 0xffffffffu) throw std::runtime_error("the scene has more patches than one frame's lists index");
-    planOf_[i] = static_cast<int>(plans_.size());
-    plans_.push_back(plan);
+    frame.planOf[i] = static_cast<int>(frame.plans.size());
+    frame.plans.push_back(plan);
   }
-  if (plans_.empty()) return;
-  ensureFrameBuffers(entries, plans_.size() * kCounters, commands);
+  if (frame.plans.empty()) return;
+  ensureFrameBuffers(frame, entries, frame.plans.size() * kCounters, commands);
 
   // Control points of meshes drawn for the first time in this mode: once per mesh, then kept.
   const RenderMode controlMode = s.mode;
   const auto m = static_cast<std::size_t>(controlMode);
   bool built = false;
-  for (const InstancePlan& plan : plans_) {
+  for (const InstancePlan& plan : frame.plans) {
     const GpuTree& tree = *trees_[plan.tree];
     TreeControl& c = controls_[tree.id];
     const bool missing = c.control[m].handle() == VK_NULL_HANDLE;
@@ -433,14 +452,14 @@ void TreeRenderer::beginFrame(VkCommandBuffer cmd, const Camera& camera, VkExten
       c.control[m] = vk::Buffer(context_, std::size_t{plan.primitives} * renderModeInfo(controlMode).controlVec4s * 16, storage,
                                 VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
       c.hulls[m] = vk::Buffer(context_, std::size_t{plan.primitives} * ARBOR_HULL_VEC4S * 16, storage, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-      c.boundMode = -1;
+      c.boundMode.fill(-1);
     }
     bindControl(plan.tree, controlMode);
     if (!missing) continue;
     PassConstants pass{};
     pass.primitiveCount = plan.primitives;
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_.modes[m].build);
-    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_.computeLayout, 0, 1, &c.computeSet, 0, nullptr);
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_.computeLayout, 0, 1, &c.computeSet[current_], 0, nullptr);
     vkCmdPushConstants(cmd, pipelines_.computeLayout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof pass, &pass);
     vkCmdDispatch(cmd, (plan.primitives + ARBOR_COMPUTE_GROUP - 1) / ARBOR_COMPUTE_GROUP, 1, 1);
     built = true;
@@ -451,7 +470,7 @@ void TreeRenderer::beginFrame(VkCommandBuffer cmd, const Camera& camera, VkExten
   }
 
   // Cull, set factors and bucket every tessellated instance's patches, then turn the buckets into draws.
-  vkCmdFillBuffer(cmd, counts_.handle(), 0, plans_.size() * kCounters * sizeof(std::uint32_t), 0);
+  vkCmdFillBuffer(cmd, frame.counts.handle(), 0, frame.plans.size() * kCounters * sizeof(std::uint32_t), 0);
   barrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
           VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
   // Back faces stay when displacement may turn them towards the eye, and when the crack test wants them seen.
@@ -476,11 +495,11 @@ void TreeRenderer::beginFrame(VkCommandBuffer cmd, const Camera& camera, VkExten
   for (int step = 0; step < 2; ++step) {
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, step == 0 ? pipelines_.cull : pipelines_.drawCommands);
     for (std::size_t i = 0; i < instances.size(); ++i) {
-      if (planOf_[i] < 0) continue;
-      const InstancePlan& plan = plans_[static_cast<std::size_t>(planOf_[i])];
+      if (frame.planOf[i] < 0) continue;
+      const InstancePlan& plan = frame.plans[static_cast<std::size_t>(frame.planOf[i])];
       const PassConstants pass = passFor(i, plan);
-      vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_.computeLayout, 0, 1, &controls_[trees_[plan.tree]->id].computeSet,
-                              0, nullptr);
+      vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_.computeLayout, 0, 1,
+                              &controls_[trees_[plan.tree]->id].computeSet[current_], 0, nullptr);
       vkCmdPushConstants(cmd, pipelines_.computeLayout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof pass, &pass);
       vkCmdDispatch(cmd, step == 0 ? (plan.primitives + ARBOR_COMPUTE_GROUP - 1) / ARBOR_COMPUTE_GROUP : 1, 1, 1);
     }
@@ -492,8 +511,8 @@ void TreeRenderer::beginFrame(VkCommandBuffer cmd, const Camera& camera, VkExten
   barrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
           VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT,
           VK_ACCESS_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_TRANSFER_READ_BIT);
-  const VkBufferCopy copy{0, 0, plans_.size() * kCounters * sizeof(std::uint32_t)};
-  vkCmdCopyBuffer(cmd, counts_.handle(), countsReadback_.handle(), 1, &copy);
+  const VkBufferCopy copy{0, 0, frame.plans.size() * kCounters * sizeof(std::uint32_t)};
+  vkCmdCopyBuffer(cmd, frame.counts.handle(), frame.countsReadback.handle(), 1, &copy);
   barrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT);
 }
 
@@ -501,7 +520,7 @@ void TreeRenderer::drawLines(VkCommandBuffer cmd, VkBuffer vertices, std::uint32
   if (count == 0) return;
   DrawConstants constants{};
   std::memcpy(constants.model, glm::value_ptr(model), sizeof constants.model);
-  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.layout, 0, 1, &sets_[0], 0, nullptr);
+  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.layout, 0, 1, &slot().sets[0], 0, nullptr);
   vkCmdPushConstants(cmd, pipelines_.layout, pipelines_.pushStages, 0, sizeof constants, &constants);
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.lines);
   const VkDeviceSize offset = 0;
@@ -515,9 +534,10 @@ void TreeRenderer::draw(VkCommandBuffer cmd, VkExtent2D extent, const RenderSett
   vkCmdSetViewport(cmd, 0, 1, &viewport);
   vkCmdSetScissor(cmd, 0, 1, &scissor);
   const VkShaderStageFlags stages = pipelines_.pushStages;
+  FrameSlot& frame = slot();
   DrawConstants constants{};
   auto bindTree = [&](std::uint32_t tree, const glm::mat4& model) {
-    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.layout, 0, 1, &sets_[tree], 0, nullptr);
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.layout, 0, 1, &frame.sets[tree], 0, nullptr);
     std::memcpy(constants.model, glm::value_ptr(model), sizeof constants.model);
     constants.leafCount = tree < trees_.size() ? trees_[tree]->leafCount : 0u;
     vkCmdPushConstants(cmd, pipelines_.layout, stages, 0, sizeof constants, &constants);
@@ -529,20 +549,20 @@ void TreeRenderer::draw(VkCommandBuffer cmd, VkExtent2D extent, const RenderSett
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.ground);
     vkCmdDraw(cmd, 6, 1, 0, 0);
   }
-  drewTree_ = false;
-  lastDraws_ = 0;
-  if (instances.size() != planOf_.size()) throw std::logic_error("draw got other instances than beginFrame");
+  frame.drewTree = false;
+  frame.draws = 0;
+  if (instances.size() != frame.planOf.size()) throw std::logic_error("draw got other instances than beginFrame");
   for (const TreeInstance& instance : instances) {
     if (instance.tree >= trees_.size()) throw std::out_of_range("tree instance names tree " + std::to_string(instance.tree));
     const GpuTree& tree = *trees_[instance.tree];
-    drewTree_ = drewTree_ || (renderModeInfo(s.mode).primitive == PatchPrimitive::Quad ? tree.patchCount : tree.triangles) > 0;
+    frame.drewTree = frame.drewTree || (renderModeInfo(s.mode).primitive == PatchPrimitive::Quad ? tree.patchCount : tree.triangles) > 0;
   }
-  if (!drewTree_) return;
+  if (!frame.drewTree) return;
 
   // An instance is drawn flat (the flat mode, or far: its mesh at the limit positions, ACC's factor 1 without
   // the tessellator) or by the indirect draws its slice of the culling pass wrote.
   auto drawMesh = [&](std::size_t i, const GpuTree& tree, bool wire) {
-    const int planIndex = planOf_[i];
+    const int planIndex = frame.planOf[i];
     const RenderMode drawn = planIndex >= 0 ? s.mode : RenderMode::Flat;
     const ModePipelines& mode = pipelines_.modes[static_cast<std::size_t>(drawn)];
     auto pick = [&](const SurfacePipelines& p) { return wire ? p.wireframe : s.revealBackFaces ? p.twoSided : p.fill; };
@@ -556,22 +576,22 @@ void TreeRenderer::draw(VkCommandBuffer cmd, VkExtent2D extent, const RenderSett
       vkCmdBindVertexBuffers(cmd, 0, 1, &vertices, &offset);
       vkCmdBindIndexBuffer(cmd, tree.indices.handle(), 0, VK_INDEX_TYPE_UINT32);
       vkCmdDrawIndexed(cmd, 3 * tree.triangles, 1, 0, 0, 0);
-      if (!wire) ++lastDraws_;
+      if (!wire) ++frame.draws;
       return;
     }
-    const InstancePlan& plan = plans_[static_cast<std::size_t>(planIndex)];
+    const InstancePlan& plan = frame.plans[static_cast<std::size_t>(planIndex)];
     // `slot`: the counter holding how many of the `most` commands from `first` the culling pass wrote.
     auto drawIndirect = [&](VkPipeline pipeline, std::uint32_t first, std::uint32_t slot, std::uint32_t most) {
       if (!pipeline) return;
       vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
       const VkDeviceSize offset = VkDeviceSize{first} * ARBOR_DRAW_COMMAND_BYTES;
       if (const PFN_vkCmdDrawIndirectCountKHR drawCount = context_.drawIndirectCount()) {
-        drawCount(cmd, commands_.handle(), offset, counts_.handle(), slot * sizeof(std::uint32_t), most, ARBOR_DRAW_COMMAND_BYTES);
+        drawCount(cmd, frame.commands.handle(), offset, frame.counts.handle(), slot * sizeof(std::uint32_t), most, ARBOR_DRAW_COMMAND_BYTES);
       } else if (context_.features().multiDrawIndirect) {
-        vkCmdDrawIndirect(cmd, commands_.handle(), offset, most, ARBOR_DRAW_COMMAND_BYTES);  // padded with empty draws
+        vkCmdDrawIndirect(cmd, frame.commands.handle(), offset, most, ARBOR_DRAW_COMMAND_BYTES);  // padded with empty draws
       } else {
         for (std::uint32_t c = 0; c < most; ++c) {
-          vkCmdDrawIndirect(cmd, commands_.handle(), offset + VkDeviceSize{c} * ARBOR_DRAW_COMMAND_BYTES, 1, ARBOR_DRAW_COMMAND_BYTES);
+          vkCmdDrawIndirect(cmd, frame.commands.handle(), offset + VkDeviceSize{c} * ARBOR_DRAW_COMMAND_BYTES, 1, ARBOR_DRAW_COMMAND_BYTES);
         }
       }
     };
@@ -582,11 +602,11 @@ void TreeRenderer::draw(VkCommandBuffer cmd, VkExtent2D extent, const RenderSett
   auto drawPoints = [&](VkPipeline pipeline, std::uint32_t count, std::uint32_t first = 0) {
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
     vkCmdDraw(cmd, count, 1, first, 0);  // the point's index (gl_VertexIndex) counts from `first`
-    ++lastDraws_;
+    ++frame.draws;
   };
 
-  if (timestamps_) vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, timestamps_, 0);
-  if (statistics_) vkCmdBeginQuery(cmd, statistics_, 0, 0);
+  if (frame.timestamps) vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, frame.timestamps, 0);
+  if (frame.statistics) vkCmdBeginQuery(cmd, frame.statistics, 0, 0);
   for (std::size_t i = 0; i < instances.size(); ++i) {
     const TreeInstance& instance = instances[i];
     const GpuTree& tree = *trees_[instance.tree];
@@ -609,8 +629,8 @@ void TreeRenderer::draw(VkCommandBuffer cmd, VkExtent2D extent, const RenderSett
       drawPoints(pipelines_.leaves, std::min(tree.leafCount, static_cast<std::uint32_t>(kept + 0.5) + 1u));
     }
   }
-  if (statistics_) vkCmdEndQuery(cmd, statistics_, 0);
-  if (timestamps_) vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, timestamps_, 1);
+  if (frame.statistics) vkCmdEndQuery(cmd, frame.statistics, 0);
+  if (frame.timestamps) vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, frame.timestamps, 1);
   if (s.wireframe) {
     for (std::size_t i = 0; i < instances.size(); ++i) {
       bindTree(instances[i].tree, instances[i].model);
@@ -619,13 +639,15 @@ void TreeRenderer::draw(VkCommandBuffer cmd, VkExtent2D extent, const RenderSett
   }
 }
 
-FrameStats TreeRenderer::stats() const {
+FrameStats TreeRenderer::stats() const { return statsOf(slot()); }
+
+FrameStats TreeRenderer::statsOf(const FrameSlot& frame) const {
   FrameStats f;
-  f.draws = lastDraws_;
-  if (!drewTree_) return f;
-  if (!plans_.empty()) {
-    const auto* counts = static_cast<const std::uint32_t*>(countsReadback_.mapped());
-    for (const InstancePlan& plan : plans_) {
+  f.draws = frame.draws;
+  if (!frame.drewTree) return f;
+  if (!frame.plans.empty()) {
+    const auto* counts = static_cast<const std::uint32_t*>(frame.countsReadback.mapped());
+    for (const InstancePlan& plan : frame.plans) {
       std::uint64_t drawn = 0;
       for (std::uint32_t b = 0; b < ARBOR_BUCKETS; ++b) drawn += counts[plan.counterBase + b];
       f.patchesDrawn += drawn;
@@ -634,17 +656,17 @@ FrameStats TreeRenderer::stats() const {
     }
   }
   const VkDevice device = context_.device();
-  if (statistics_) {
+  if (frame.statistics) {
     std::uint64_t primitives = 0;
-    if (vkGetQueryPoolResults(device, statistics_, 0, 1, sizeof primitives, &primitives, sizeof primitives,
+    if (vkGetQueryPoolResults(device, frame.statistics, 0, 1, sizeof primitives, &primitives, sizeof primitives,
                               VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT) == VK_SUCCESS) {
       f.triangles = primitives;
       f.hasTriangles = true;
     }
   }
-  if (timestamps_) {
+  if (frame.timestamps) {
     std::uint64_t t[kTimestampCount] = {};
-    if (vkGetQueryPoolResults(device, timestamps_, 0, kTimestampCount, sizeof t, t, sizeof t[0],
+    if (vkGetQueryPoolResults(device, frame.timestamps, 0, kTimestampCount, sizeof t, t, sizeof t[0],
                               VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT) == VK_SUCCESS) {
       f.gpuMilliseconds = static_cast<double>(t[1] - t[0]) * context_.properties().limits.timestampPeriod * 1e-6;
       f.hasTime = true;

@@ -91,6 +91,11 @@ class TreeRenderer {
   TreeRenderer& operator=(const TreeRenderer&) = delete;
 
   static constexpr std::uint32_t kMaxTrees = 64;
+  // Frames that may be recorded while earlier ones still run: each has its own uniforms, queries, patch lists
+  // and descriptor sets. beginFrame may reuse a frame's resources only when the frame kFramesInFlight before it
+  // has completed (the caller's fences see to that).
+  static constexpr std::uint32_t kFramesInFlight = 2;
+  // Both wait until the device is idle: frames in flight may still read the previous trees.
   void setTree(const GpuTree* tree);                        // one tree, or none (sky and ground only)
   void setTrees(const std::vector<const GpuTree*>& trees);  // a scene's distinct trees, at most kMaxTrees
   // Leaves and fake branches are expanded from points by geometry shaders, which not every device has.
@@ -117,8 +122,11 @@ class TreeRenderer {
   // Inside the render pass, after draw: `count` LineVertex ends (pairs) from `vertices`, placed by `model`,
   // depth-tested against the scene. Not counted in the statistics.
   void drawLines(VkCommandBuffer cmd, VkBuffer vertices, std::uint32_t count, const glm::mat4& model);
-  // After the frame's commands have completed.
+  // Of the frame begun last, once its commands have completed.
   FrameStats stats() const;
+  // Of the latest frame known to have completed: the one whose resources the last beginFrame reused, that is
+  // kFramesInFlight frames back (for a display that does not wait for each frame).
+  FrameStats completedStats() const { return completed_; }
 
   // Patches per draw in each bucket, and how many buckets: lavapipe wraps its 16-bit indices beyond 65535
   // tessellated vertices and garbles patches beyond 4096 input vertices per draw; other devices take one draw.
@@ -129,46 +137,58 @@ class TreeRenderer {
   DrawSizes drawSizes(const RenderSettings& settings) const;
 
  private:
-  // A distinct tree's control points and hulls per tessellated mode, built on first use.
+  // A distinct tree's control points and hulls per tessellated mode, built on first use; per frame in flight,
+  // the compute set that reads them with that frame's lists.
   struct TreeControl {
     std::array<vk::Buffer, kRenderModeCount> control, hulls;
-    VkDescriptorSet computeSet = VK_NULL_HANDLE;
-    int boundMode = -1;       // the mode whose control buffers the tree's sets point at
-    std::uint64_t boundFrame = 0;  // the frame buffers' generation the compute set points at
+    std::array<VkDescriptorSet, kFramesInFlight> computeSet{};
+    std::array<int, kFramesInFlight> boundMode{-1, -1};  // the mode whose control buffers that frame's sets point at
+    std::array<std::uint64_t, kFramesInFlight> boundGeneration{};  // the frame buffers' generation they point at
   };
-  // One tessellated instance's slice of this frame's lists.
+  // One tessellated instance's slice of a frame's lists.
   struct InstancePlan {
     std::uint32_t tree = 0, primitives = 0, listBase = 0, counterBase = 0, commandBase = 0, maxCommands = 0;
   };
+  // What one frame in flight owns.
+  struct FrameSlot {
+    vk::Buffer scene;                       // the Scene uniforms
+    std::vector<VkDescriptorSet> sets;      // one per tree; the first also serves sky and ground
+    VkQueryPool statistics = VK_NULL_HANDLE, timestamps = VK_NULL_HANDLE;
+    // Surviving patches per bucket, counters, draw commands; and the counters read back.
+    vk::Buffer visible, counts, commands, countsReadback;
+    std::uint64_t generation = 0;           // bumped when those buffers are reallocated
+    std::vector<InstancePlan> plans;
+    std::vector<int> planOf;                // per instance of the frame: its plan, or -1 when drawn untessellated
+    RenderMode mode = RenderMode::ACC;
+    std::uint32_t draws = 0;
+    bool drewTree = false;
+    bool used = false;                      // has recorded a frame
+  };
 
   glm::vec3 eye_{0.0f};  // of the frame begun last: leaf draws are cut to what thinning keeps
-  void writeSet(VkDescriptorSet set, const GpuTree* tree);
+  FrameSlot& slot() { return slots_[current_]; }
+  const FrameSlot& slot() const { return slots_[current_]; }
+  FrameStats statsOf(const FrameSlot& frame) const;
+  void writeSet(const FrameSlot& frame, VkDescriptorSet set, const GpuTree* tree);
   void bindControl(std::uint32_t tree, RenderMode mode);
-  void ensureFrameBuffers(std::size_t entries, std::size_t counters, std::size_t commands);
+  void ensureFrameBuffers(FrameSlot& frame, std::size_t entries, std::size_t counters, std::size_t commands);
   bool drawnTessellated(const TreeInstance& instance, const RenderSettings& s) const;
 
   const vk::VulkanContext& context_;
   Pipelines pipelines_;
   vk::GpuImage barkColor_, barkHeight_, leafAtlas_;
   VkSampler sampler_ = VK_NULL_HANDLE, leafSampler_ = VK_NULL_HANDLE;
-  vk::Buffer scene_;
   vk::Buffer capture_;
   std::uint32_t captureCapacity_ = 0;
   VkDescriptorPool pool_ = VK_NULL_HANDLE;
-  std::vector<VkDescriptorSet> sets_;  // one per tree; the first also serves sky and ground
-  VkQueryPool statistics_ = VK_NULL_HANDLE, timestamps_ = VK_NULL_HANDLE;
   std::vector<const GpuTree*> trees_;
   std::unordered_map<std::uint64_t, TreeControl> controls_;  // by GpuTree::id
   VkDescriptorPool computePool_ = VK_NULL_HANDLE;
-  // This frame's lists: surviving patches per bucket, counters, draw commands; and the counters read back.
-  vk::Buffer visible_, counts_, commands_, countsReadback_;
-  std::uint64_t frameGeneration_ = 0;  // bumped when those buffers are reallocated
+  std::array<FrameSlot, kFramesInFlight> slots_;
+  std::uint32_t current_ = 0;  // the slot of the frame begun last
+  std::uint64_t framesBegun_ = 0;
+  FrameStats completed_;
   bool inspect_ = false;
-  std::vector<InstancePlan> plans_;
-  std::vector<int> planOf_;
-  RenderMode lastMode_ = RenderMode::ACC;  // per instance of the frame: its plan, or -1 when drawn untessellated
-  std::uint32_t lastDraws_ = 0;
-  bool drewTree_ = false;
 };
 
 }  // namespace arbor::render

@@ -61,7 +61,8 @@ Swapchain::Swapchain(const vk::VulkanContext& context, VkSurfaceKHR surface, VkE
   // cleared only after the previous frame's tests.
   const std::array<VkSubpassDependency, 2> dependencies{{
       {VK_SUBPASS_EXTERNAL, 0, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT,
-       VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT, 0,
+       VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT,
+       VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,  // the frame before, still in flight, wrote the shared depth image
        VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT, 0},
       {0, VK_SUBPASS_EXTERNAL, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
        VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, VK_ACCESS_TRANSFER_READ_BIT, 0},
@@ -78,13 +79,16 @@ Swapchain::Swapchain(const vk::VulkanContext& context, VkSurfaceKHR surface, VkE
   VkCommandBufferAllocateInfo alloc{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
   alloc.commandPool = context.commandPool();
   alloc.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-  alloc.commandBufferCount = 1;
-  vk::check(vkAllocateCommandBuffers(context.device(), &alloc, &cmd_), "vkAllocateCommandBuffers");
+  alloc.commandBufferCount = kFramesInFlight;
+  vk::check(vkAllocateCommandBuffers(context.device(), &alloc, cmd_.data()), "vkAllocateCommandBuffers");
   const VkSemaphoreCreateInfo semaphore{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO};
-  vk::check(vkCreateSemaphore(context.device(), &semaphore, nullptr, &imageAvailable_), "vkCreateSemaphore");
-  vk::check(vkCreateSemaphore(context.device(), &semaphore, nullptr, &renderFinished_), "vkCreateSemaphore");
   VkFenceCreateInfo fence{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
-  vk::check(vkCreateFence(context.device(), &fence, nullptr, &inFlight_), "vkCreateFence");
+  fence.flags = VK_FENCE_CREATE_SIGNALED_BIT;  // nothing to wait for before the first frames
+  for (std::uint32_t f = 0; f < kFramesInFlight; ++f) {
+    vk::check(vkCreateSemaphore(context.device(), &semaphore, nullptr, &imageAvailable_[f]), "vkCreateSemaphore");
+    vk::check(vkCreateSemaphore(context.device(), &semaphore, nullptr, &renderFinished_[f]), "vkCreateSemaphore");
+    vk::check(vkCreateFence(context.device(), &fence, nullptr, &inFlight_[f]), "vkCreateFence");
+  }
   build(size);
 }
 
@@ -93,10 +97,12 @@ Swapchain::~Swapchain() {
   vkDeviceWaitIdle(device);
   destroyImages();
   if (swapchain_) vkDestroySwapchainKHR(device, swapchain_, nullptr);
-  vkDestroyFence(device, inFlight_, nullptr);
-  vkDestroySemaphore(device, imageAvailable_, nullptr);
-  vkDestroySemaphore(device, renderFinished_, nullptr);
-  vkFreeCommandBuffers(device, context_.commandPool(), 1, &cmd_);
+  for (std::uint32_t f = 0; f < kFramesInFlight; ++f) {
+    vkDestroyFence(device, inFlight_[f], nullptr);
+    vkDestroySemaphore(device, imageAvailable_[f], nullptr);
+    vkDestroySemaphore(device, renderFinished_[f], nullptr);
+  }
+  vkFreeCommandBuffers(device, context_.commandPool(), kFramesInFlight, cmd_.data());
   vkDestroyRenderPass(device, renderPass_, nullptr);
 }
 
@@ -173,16 +179,18 @@ void Swapchain::build(VkExtent2D size) {
 }
 
 bool Swapchain::beginFrame(VkCommandBuffer& cmd) {
-  const VkDevice device = context_.device();  // the previous frame is done: endFrame waited for it
-  const VkResult acquired = vkAcquireNextImageKHR(device, swapchain_, UINT64_MAX, imageAvailable_, VK_NULL_HANDLE, &current_);
+  const VkDevice device = context_.device();
+  // The frame that last used this slot's command buffer, semaphores and the renderer's per-frame resources.
+  vk::check(vkWaitForFences(device, 1, &inFlight_[frame_], VK_TRUE, UINT64_MAX), "vkWaitForFences");
+  const VkResult acquired = vkAcquireNextImageKHR(device, swapchain_, UINT64_MAX, imageAvailable_[frame_], VK_NULL_HANDLE, &current_);
   if (acquired == VK_ERROR_OUT_OF_DATE_KHR) return false;
   if (acquired != VK_SUBOPTIMAL_KHR) vk::check(acquired, "vkAcquireNextImageKHR");
-  vk::check(vkResetFences(device, 1, &inFlight_), "vkResetFences");
-  vk::check(vkResetCommandBuffer(cmd_, 0), "vkResetCommandBuffer");
+  vk::check(vkResetFences(device, 1, &inFlight_[frame_]), "vkResetFences");
+  vk::check(vkResetCommandBuffer(cmd_[frame_], 0), "vkResetCommandBuffer");
   VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
   begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
-  vk::check(vkBeginCommandBuffer(cmd_, &begin), "vkBeginCommandBuffer");
-  cmd = cmd_;
+  vk::check(vkBeginCommandBuffer(cmd_[frame_], &begin), "vkBeginCommandBuffer");
+  cmd = cmd_[frame_];
   return true;
 }
 
@@ -196,27 +204,28 @@ void Swapchain::recordScreenshot(VkCommandBuffer cmd) {
   vk::transitionImage(cmd, image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR);
 }
 
-bool Swapchain::endFrame() {
-  vk::check(vkEndCommandBuffer(cmd_), "vkEndCommandBuffer");
+bool Swapchain::endFrame(bool wait) {
+  const std::uint32_t frame = frame_;
+  frame_ = (frame_ + 1) % kFramesInFlight;
+  vk::check(vkEndCommandBuffer(cmd_[frame]), "vkEndCommandBuffer");
   const VkPipelineStageFlags waitStage = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
   VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
   submit.waitSemaphoreCount = 1;
-  submit.pWaitSemaphores = &imageAvailable_;
+  submit.pWaitSemaphores = &imageAvailable_[frame];
   submit.pWaitDstStageMask = &waitStage;
   submit.commandBufferCount = 1;
-  submit.pCommandBuffers = &cmd_;
+  submit.pCommandBuffers = &cmd_[frame];
   submit.signalSemaphoreCount = 1;
-  submit.pSignalSemaphores = &renderFinished_;
-  vk::check(vkQueueSubmit(context_.queue(), 1, &submit, inFlight_), "vkQueueSubmit");
+  submit.pSignalSemaphores = &renderFinished_[frame];
+  vk::check(vkQueueSubmit(context_.queue(), 1, &submit, inFlight_[frame]), "vkQueueSubmit");
   VkPresentInfoKHR present{VK_STRUCTURE_TYPE_PRESENT_INFO_KHR};
   present.waitSemaphoreCount = 1;
-  present.pWaitSemaphores = &renderFinished_;
+  present.pWaitSemaphores = &renderFinished_[frame];
   present.swapchainCount = 1;
   present.pSwapchains = &swapchain_;
   present.pImageIndices = &current_;
   const VkResult presented = vkQueuePresentKHR(context_.queue(), &present);
-  // The renderer reads its statistics right after the frame: wait for it (one frame in flight).
-  vk::check(vkWaitForFences(context_.device(), 1, &inFlight_, VK_TRUE, UINT64_MAX), "vkWaitForFences");
+  if (wait) vk::check(vkWaitForFences(context_.device(), 1, &inFlight_[frame], VK_TRUE, UINT64_MAX), "vkWaitForFences");
   if (presented == VK_ERROR_OUT_OF_DATE_KHR || presented == VK_SUBOPTIMAL_KHR) return false;
   vk::check(presented, "vkQueuePresentKHR");
   return true;

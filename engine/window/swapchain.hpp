@@ -1,6 +1,8 @@
 #pragma once
-// The window's swapchain with a colour + depth render pass like the offscreen target's, one frame in flight
-// (the renderer's scene buffer is single), recreated on resize, and screenshots read back from it.
+// The window's swapchain with a colour + depth render pass like the offscreen target's, kFramesInFlight frames
+// in flight (as many as the renderer has per-frame resources for), recreated on resize, and screenshots read
+// back from it.
+#include <array>
 #include <vector>
 
 #include "image/png_io.hpp"
@@ -23,14 +25,17 @@ class Swapchain {
   VkPresentModeKHR presentMode() const { return presentMode_; }
   void recreate(VkExtent2D size);
 
-  // Acquires an image and begins the command buffer; false: out of date.
+  static constexpr std::uint32_t kFramesInFlight = 2;
+
+  // Waits until the frame kFramesInFlight back has completed, acquires an image and begins a command buffer;
+  // false: out of date.
   bool beginFrame(VkCommandBuffer& cmd);
   VkFramebuffer framebuffer() const { return framebuffers_[current_]; }
   // After the render pass: copy the image for screenshot() (valid once the frame is done).
   void recordScreenshot(VkCommandBuffer cmd);
-  // Ends the command buffer, submits, presents and waits for the frame; false: out of date or suboptimal
-  // (recreate).
-  bool endFrame();
+  // Ends the command buffer, submits and presents; with `wait`, also waits until the frame has completed (for
+  // a screenshot or statistics). False: out of date or suboptimal (recreate).
+  bool endFrame(bool wait);
   void waitIdle() const;
   Image screenshot() const;  // RGBA, row 0 at the top, of the last frame that recorded one
 
@@ -51,10 +56,11 @@ class Swapchain {
   std::vector<VkFramebuffer> framebuffers_;
   vk::GpuImage depth_;
   vk::Buffer readback_;
-  VkCommandBuffer cmd_ = VK_NULL_HANDLE;
-  VkSemaphore imageAvailable_ = VK_NULL_HANDLE, renderFinished_ = VK_NULL_HANDLE;
-  VkFence inFlight_ = VK_NULL_HANDLE;
-  std::uint32_t current_ = 0;
+  std::array<VkCommandBuffer, kFramesInFlight> cmd_{};
+  std::array<VkSemaphore, kFramesInFlight> imageAvailable_{}, renderFinished_{};
+  std::array<VkFence, kFramesInFlight> inFlight_{};
+  std::uint32_t frame_ = 0;    // which of the frames in flight is being recorded
+  std::uint32_t current_ = 0;  // the acquired image
   bool swizzle_ = false;  // BGRA images
 };
 

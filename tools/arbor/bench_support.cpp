@@ -17,19 +17,16 @@ Figures summarize(std::vector<double> v) {
 
 TimedFrames timeFrames(render::RenderSession& session, const render::Camera& camera, const render::RenderSettings& settings, int frames,
                        const std::vector<render::TreeInstance>* instances) {
-  std::vector<double> cpu, gpu;
   TimedFrames t;
-  const auto frame = [&] { return instances ? session.render(camera, settings, *instances) : session.render(camera, settings); };
-  t.last = frame();  // warm-up: pipelines, caches
+  const std::vector<render::TreeInstance> single =
+      session.tree() ? std::vector<render::TreeInstance>{{0, render::plantedModel(*session.tree())}} : std::vector<render::TreeInstance>{};
+  const std::vector<render::TreeInstance>& drawn = instances ? *instances : single;
+  t.last = session.render(camera, settings, drawn);  // warm-up, waited for: pipelines, control points, caches
   t.firstCpuMs = t.last.cpuMilliseconds;
-  for (int f = 0; f < frames; ++f) {
-    t.last = frame();
-    cpu.push_back(t.last.cpuMilliseconds);
-    if (t.last.gpu.hasTime) gpu.push_back(t.last.gpu.gpuMilliseconds);
-  }
-  t.cpu = summarize(cpu);
-  t.gpu = summarize(gpu);
-  t.hasGpu = !gpu.empty();
+  // The timed frames run as the viewer runs them, two in flight: each is the time between two completions.
+  t.cpu = summarize(session.renderInFlight(camera, settings, drawn, frames, t.last));
+  if (t.last.gpu.hasTime) t.gpu = summarize({t.last.gpu.gpuMilliseconds});  // timestamps of the last frame
+  t.hasGpu = t.last.gpu.hasTime;
   return t;
 }
 

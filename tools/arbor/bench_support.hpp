@@ -13,13 +13,14 @@ struct Figures {
 };
 
 struct TimedFrames {
-  Figures cpu, gpu;             // milliseconds: host (record, submit, wait) and timestamps
+  Figures cpu, gpu;             // milliseconds: host (between completions, two frames in flight) and timestamps (the last frame)
   double firstCpuMs = 0.0;      // the warm-up frame's host time
   bool hasGpu = false;
   render::FrameResult last;
 };
 
-// One warm-up frame, then `frames` timed ones: the session's tree, or the renderer's trees at `instances`.
+// One warm-up frame waited for, then `frames` timed ones two in flight: the session's tree, or the renderer's
+// trees at `instances`.
 TimedFrames timeFrames(render::RenderSession& session, const render::Camera& camera, const render::RenderSettings& settings, int frames,
                        const std::vector<render::TreeInstance>* instances = nullptr);
 

@@ -21,6 +21,7 @@ class ForestScene final : public ViewerScene {
   render::Camera overview(float aspect) const override { return forest_->overview(aspect); }
   std::vector<render::Camera> tour(float aspect) const override { return forest_->tour(aspect); }
   bool handle(const WindowEvent& event) override;
+  bool replacesGpuData() const override { return regenerate_; }
   void update(render::TreeRenderer& renderer) override;
   void panel(ViewState& state) override;
   void drawLines(VkCommandBuffer, render::TreeRenderer&) override {}

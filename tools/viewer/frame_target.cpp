@@ -37,9 +37,12 @@ class WindowTarget final : public FrameTarget {
     before(cmd);
     recordPass(cmd, swapchain_.renderPass(), swapchain_.framebuffer(), swapchain_.extent(), inside);
     if (screenshot) swapchain_.recordScreenshot(cmd);
-    if (!swapchain_.endFrame()) swapchain_.recreate(window_.framebufferSize());  // shown, but out of date now
+    // Frames run behind the recording (two in flight) except when the picture or its figures are wanted now.
+    completed_ = screenshot;
+    if (!swapchain_.endFrame(screenshot)) swapchain_.recreate(window_.framebufferSize());  // shown, but out of date now
     return true;
   }
+  bool lastFrameCompleted() const override { return completed_; }
   Image screenshot() const override { return swapchain_.screenshot(); }
   void resize(VkExtent2D size) override { swapchain_.recreate(size); }
   void waitIdle() const override { swapchain_.waitIdle(); }
@@ -47,6 +50,7 @@ class WindowTarget final : public FrameTarget {
  private:
   window::Window& window_;
   window::Swapchain swapchain_;
+  bool completed_ = false;
 };
 
 class OffscreenFrames final : public FrameTarget {
@@ -66,6 +70,7 @@ class OffscreenFrames final : public FrameTarget {
     });
     return true;
   }
+  bool lastFrameCompleted() const override { return true; }
   Image screenshot() const override { return target_->readback(); }
   void resize(VkExtent2D size) override {
     if (size.width == extent().width && size.height == extent().height) return;

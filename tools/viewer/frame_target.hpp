@@ -25,6 +25,9 @@ class FrameTarget {
   // recreated).
   virtual bool draw(const Recorder& before, const Recorder& inside, bool screenshot) = 0;
   virtual Image screenshot() const = 0;  // of the last frame drawn with `screenshot`
+  // Whether the frame drawn last has finished on the device (its statistics can be read); a window's frames
+  // run behind the recording unless drawn with `screenshot`.
+  virtual bool lastFrameCompleted() const = 0;
   virtual void resize(VkExtent2D size) = 0;
   virtual void waitIdle() const = 0;
 };

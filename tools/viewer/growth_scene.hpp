@@ -36,6 +36,7 @@ class GrowthScene final : public ViewerScene {
   render::Camera overview(float aspect) const override;
   std::vector<render::Camera> tour(float aspect) const override;
   bool handle(const WindowEvent& event) override;
+  bool replacesGpuData() const override { return true; }  // growing rebuilds the mesh and the wireframes
   void update(render::TreeRenderer& renderer) override;
   void panel(ViewState& state) override;
   void drawLines(VkCommandBuffer cmd, render::TreeRenderer& renderer) override;

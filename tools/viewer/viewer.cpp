@@ -136,7 +136,7 @@ int runViewer(const ViewerOptions& o, ViewState& state, ViewerScene& scene) {
         if (isSceneEvent(e)) scene.handle(e);
         else applyWindowEvent(e, win.get(), *target);
       }
-      target->waitIdle();  // the scene may replace what the last frame drew from
+      if (scene.replacesGpuData()) target->waitIdle();  // frames in flight may still draw from what it replaces
       scene.update(renderer);
       if (win) {
         win->pollEvents();
@@ -182,7 +182,7 @@ int runViewer(const ViewerOptions& o, ViewState& state, ViewerScene& scene) {
         if (state.showOverlay) overlay->discardFrame();
         continue;
       }
-      stats = renderer.stats();
+      stats = target->lastFrameCompleted() ? renderer.stats() : renderer.completedStats();
       const float ms = elapsed * 1000.0f;
       if (f > 0) frameMs.push_back(ms);
       state.frameTimes[state.frameIndex] = ms;

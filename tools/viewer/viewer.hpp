@@ -36,7 +36,9 @@ class ViewerScene {
   virtual std::vector<render::Camera> tour(float aspect) const = 0;
   // Scene events of --events (validated before the device starts); false: not one this scene knows.
   virtual bool handle(const WindowEvent& event) = 0;
-  // Between frames, the device idle: apply what the panel or the events asked for, regrow, upload.
+  // Between frames: apply what the panel or the events asked for, regrow, upload. The device is idle when
+  // replacesGpuData() said so just before (frames run two in flight otherwise).
+  virtual bool replacesGpuData() const = 0;
   virtual void update(render::TreeRenderer& renderer) = 0;
   // Inside the panel's window, after the render settings.
   virtual void panel(ViewState& state) = 0;
