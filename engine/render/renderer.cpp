@@ -273,6 +273,12 @@ std::vector<glm::vec4> TreeRenderer::readControl(const GpuTree& tree, RenderMode
   return records;
 }
 
+std::size_t TreeRenderer::controlBytes(RenderMode mode) const {
+  std::size_t bytes = 0;
+  for (const auto& [id, c] : controls_) bytes += c.control[static_cast<std::size_t>(mode)].size() + c.hulls[static_cast<std::size_t>(mode)].size();
+  return bytes;
+}
+
 std::vector<PatchDraw> TreeRenderer::inspectDraws() const {
   std::vector<PatchDraw> draws;
   if (!inspect_) throw std::logic_error("inspectDraws needs setInspection(true) before the frame");

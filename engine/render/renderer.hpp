@@ -107,6 +107,8 @@ class TreeRenderer {
   // A tree's control records (interface.h) for `mode`, or with `hulls` its culling hulls, read back from the GPU
   // (tests); empty until a frame has drawn the tree in that mode.
   std::vector<glm::vec4> readControl(const GpuTree& tree, RenderMode mode, bool hulls = false) const;
+  // Bytes of the control points and hulls built so far for `mode`, all trees together (GpuTree::bytes has the rest).
+  std::size_t controlBytes(RenderMode mode) const;
 
   // Keeps this frame's patch lists and draw commands readable by the host (tests; slower on discrete GPUs).
   void setInspection(bool on);

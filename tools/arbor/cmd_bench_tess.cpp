@@ -94,6 +94,7 @@ struct Measured {
   TimedFrames timed;
   double seconds = 0.0;  // the frame time used for rates: GPU timestamps, or the host's on lavapipe
   double rate = 0.0;     // M triangles/s
+  std::size_t bytes = 0;  // on the GPU: the trees' buffers and the control points this mode built
 };
 
 double mib(std::size_t bytes) { return static_cast<double>(bytes) / (1024.0 * 1024.0); }
@@ -182,6 +183,7 @@ int runBenchTess(const BenchTessOptions& o) {
     m.triangles = m.timed.last.gpu.triangles;
     m.seconds = (hostTimed || !m.timed.hasGpu ? m.timed.cpu.median : m.timed.gpu.median) * 1e-3;
     m.rate = m.seconds > 0.0 ? static_cast<double>(m.triangles) / m.seconds * 1e-6 : 0.0;
+    m.bytes = scene.bytes + session.renderer().controlBytes(s.mode);
     return m;
   };
 
@@ -236,12 +238,12 @@ int runBenchTess(const BenchTessOptions& o) {
     if (!m->timed.hasGpu) std::printf("- | ");
     else std::printf("%.3f (%.3f-%.3f)%s | ", m->timed.gpu.median, m->timed.gpu.lo, m->timed.gpu.hi, hostTimed ? " *" : "");
     std::printf("%.2f | %s | %.1f |\n", m->rate, o.noCeiling ? "-" : (std::to_string(static_cast<int>(std::lround(100.0 * shareOfCeiling(*m)))) + " %").c_str(),
-                mib(scene.bytes));
+                mib(m->bytes));
     {
       csv << m->mode << ',' << m->factor << ',' << m->adaptive << ',' << m->displacement << ',' << m->triangles << ','
           << m->timed.last.gpu.patchesDrawn << ',' << m->timed.last.gpu.patchesCulled << ',' << m->timed.last.gpu.draws << ',' << m->timed.cpu.median
           << ',' << m->timed.cpu.lo << ',' << m->timed.cpu.hi << ',' << m->timed.gpu.median << ',' << m->timed.gpu.lo << ',' << m->timed.gpu.hi
-          << ',' << m->rate << ',' << (o.noCeiling ? 0.0 : shareOfCeiling(*m)) << ',' << scene.bytes << '\n';
+          << ',' << m->rate << ',' << (o.noCeiling ? 0.0 : shareOfCeiling(*m)) << ',' << m->bytes << '\n';
     }
   }
   std::fflush(stdout);
@@ -277,8 +279,8 @@ int runBenchTess(const BenchTessOptions& o) {
       const double accFirstMs = patchUploadMs + acc->timed.firstCpuMs;  // patches and upload, then its first frame
       const std::size_t bytes = session.tree()->bytes;
       std::printf("| %g | %llu | %.0f, %.2f, %.1f | %.0f, %.0f, %.2f, %.1f | %.1f |\n", static_cast<double>(factor),
-                  static_cast<unsigned long long>(first.gpu.triangles), accFirstMs, accFrameMs, mib(scene.bytes), subdivideMs, firstFrameMs,
-                  frameMs, mib(bytes), static_cast<double>(bytes) / static_cast<double>(scene.bytes));
+                  static_cast<unsigned long long>(first.gpu.triangles), accFirstMs, accFrameMs, mib(acc->bytes), subdivideMs, firstFrameMs,
+                  frameMs, mib(bytes), static_cast<double>(bytes) / static_cast<double>(acc->bytes));
       std::fflush(stdout);
       Measured m;
       m.label = "cpu-subdivided x" + CLI::detail::to_string(factor);
