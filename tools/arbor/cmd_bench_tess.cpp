@@ -260,13 +260,14 @@ int runBenchTess(const BenchTessOptions& o) {
         return m.mode == "acc" && m.adaptive <= 0.0f && m.displacement == 0.0f && m.factor == factor;
       });
       if (acc == results.end()) continue;
-      if (static_cast<double>(scene.quads) * std::pow(4.0, levels) > 2.0e7) {
+      constexpr double kMostRefinedQuads = 2.0e7;  // the comparison's own bound, above the export's quad limit
+      if (static_cast<double>(scene.quads) * std::pow(4.0, levels) > kMostRefinedQuads) {
         std::printf("| %g | - | skipped: %zu quads x 4^%d is over 20 M refined quads |||\n", static_cast<double>(factor), scene.quads, levels);
         continue;
       }
       std::fprintf(stderr, "arbor bench tess: CPU subdivision, %d levels\n", levels);
       const auto start = std::chrono::steady_clock::now();
-      const QuadMesh refined = levels > 0 ? subdivide(tree.mesh, levels) : tree.mesh;
+      const QuadMesh refined = levels > 0 ? subdivide(tree.mesh, levels, static_cast<std::size_t>(kMostRefinedQuads)) : tree.mesh;
       const double subdivideMs = msSince(start);
       session.setTree(refined, PatchSet{});  // the tessellated cells are done: the same pipelines draw it
       render::RenderSettings s;
