@@ -17,6 +17,7 @@
 #include "growth/lsystem/turtle.hpp"
 #include "mesh/mesh_checks.hpp"
 #include "mesh/tree_mesh.hpp"
+#include "manifold_checks.hpp"
 #include "test_support.hpp"
 
 using namespace arbor;
@@ -251,15 +252,7 @@ TEST_CASE("every preset parses, derives, draws and meshes to a closed quad manif
     const Skeleton s = model.grow({});
     CHECK(s.nodes.size() >= 2);
     const TreeMesh tree = buildTreeMesh(s);
-    const MeshTopologyReport r = checkTopology(tree.mesh);
-    CHECK(!tree.mesh.quads.empty());
-    CHECK(r.boundaryEdges == 0);
-    CHECK(r.nonManifoldEdges == 0);
-    CHECK(r.misorientedEdges == 0);
-    CHECK(r.nonManifoldVertices == 0);
-    CHECK(r.components == 1);
-    CHECK(r.eulerCharacteristic == 2);
-    CHECK(r.signedVolume > 0);
+    test::checkClosedManifold(tree.mesh);
     const Lsystem& system = *lsystemOf(model);
     const bool planar = path.filename().string().rfind("fig-1-2", 0) == 0 || path.filename().string().rfind("fig-1-3", 0) == 0;
     if (planar && path.filename() != "fig-1-25.lsys") {

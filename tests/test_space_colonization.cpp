@@ -17,6 +17,7 @@
 #include "growth/space_colonization/space_colonization_model.hpp"
 #include "mesh/mesh_checks.hpp"
 #include "mesh/tree_mesh.hpp"
+#include "manifold_checks.hpp"
 
 using namespace arbor;
 using namespace arbor::sc;
@@ -683,18 +684,10 @@ TEST_CASE("every space-colonization preset grows and meshes to a closed quad man
     const auto start = std::chrono::steady_clock::now();
     const Skeleton s = model.grow({});
     const TreeMesh tree = buildTreeMesh(s);
-    const MeshTopologyReport r = checkTopology(tree.mesh);
     WARN(e.path().filename().string() << ": " << s.nodes.size() << " skeleton nodes, " << s.leaves.size() << " leaves, "
                                       << tree.mesh.quads.size() << " quads, "
                                       << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << " s");
-    CHECK(!tree.mesh.quads.empty());
-    CHECK(r.boundaryEdges == 0);
-    CHECK(r.nonManifoldEdges == 0);
-    CHECK(r.misorientedEdges == 0);
-    CHECK(r.nonManifoldVertices == 0);
-    CHECK(r.components == 1);
-    CHECK(r.eulerCharacteristic == 2);
-    CHECK(r.signedVolume > 0);
+    test::checkClosedManifold(tree.mesh);
   }
   CHECK(presets == 4);
 }
@@ -713,15 +706,7 @@ TEST_CASE("random models: valid, the same for the same seed, read back, and grow
     for (const AttractionCloud& c : m.clouds) ++shapes[static_cast<int>(c.shape)];
     const Skeleton s = back.grow({});
     branched += s.stems.size() > 10;
-    const TreeMesh tree = buildTreeMesh(s);
-    const MeshTopologyReport r = checkTopology(tree.mesh);
-    CHECK(r.boundaryEdges == 0);
-    CHECK(r.nonManifoldEdges == 0);
-    CHECK(r.misorientedEdges == 0);
-    CHECK(r.nonManifoldVertices == 0);
-    CHECK(r.components == 1);
-    CHECK(r.eulerCharacteristic == 2);
-    CHECK(r.signedVolume > 0);
+    test::checkClosedManifold(buildTreeMesh(s).mesh);
   }
   // The clouds reach the trunk, so the trees branch; every shape and obstacles occur.
   CHECK(branched >= 45);
