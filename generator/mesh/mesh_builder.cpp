@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
-#include <numbers>
 #include <stdexcept>
 
 #include "common/input_error.hpp"
@@ -23,7 +22,6 @@ namespace arbor {
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 constexpr std::uint32_t kUnmade = 0xfffffff0u;  // indices of corners not emitted yet
 
 struct Ring {
