@@ -164,6 +164,21 @@ VkPipeline buildCompute(VkDevice device, VkPipelineLayout layout, const Stage& s
   return pipeline;
 }
 
+// A descriptor set layout of these bindings and a pipeline layout of that one set and one push-constant range.
+void createLayouts(VkDevice device, const VkDescriptorSetLayoutBinding* bindings, std::uint32_t count, const VkPushConstantRange& push,
+                   VkDescriptorSetLayout& setLayout, VkPipelineLayout& layout) {
+  VkDescriptorSetLayoutCreateInfo setInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+  setInfo.bindingCount = count;
+  setInfo.pBindings = bindings;
+  vk::check(vkCreateDescriptorSetLayout(device, &setInfo, nullptr, &setLayout), "vkCreateDescriptorSetLayout");
+  VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+  layoutInfo.setLayoutCount = 1;
+  layoutInfo.pSetLayouts = &setLayout;
+  layoutInfo.pushConstantRangeCount = 1;
+  layoutInfo.pPushConstantRanges = &push;
+  vk::check(vkCreatePipelineLayout(device, &layoutInfo, nullptr, &layout), "vkCreatePipelineLayout");
+}
+
 // The compute passes' set: the scene, a tree's buffers, the control points and this frame's lists.
 void createComputeLayouts(VkDevice device, Pipelines& p) {
   std::array<VkDescriptorSetLayoutBinding, ARBOR_COMPUTE_BINDINGS> bindings{};
@@ -171,17 +186,8 @@ void createComputeLayouts(VkDevice device, Pipelines& p) {
     bindings[b] = {b, b == ARBOR_COMPUTE_SCENE ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1,
                    VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
   }
-  VkDescriptorSetLayoutCreateInfo setInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
-  setInfo.bindingCount = static_cast<std::uint32_t>(bindings.size());
-  setInfo.pBindings = bindings.data();
-  vk::check(vkCreateDescriptorSetLayout(device, &setInfo, nullptr, &p.computeSetLayout), "vkCreateDescriptorSetLayout");
-  const VkPushConstantRange push{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(PassConstants)};
-  VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
-  layoutInfo.setLayoutCount = 1;
-  layoutInfo.pSetLayouts = &p.computeSetLayout;
-  layoutInfo.pushConstantRangeCount = 1;
-  layoutInfo.pPushConstantRanges = &push;
-  vk::check(vkCreatePipelineLayout(device, &layoutInfo, nullptr, &p.computeLayout), "vkCreatePipelineLayout");
+  createLayouts(device, bindings.data(), static_cast<std::uint32_t>(bindings.size()),
+                {VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(PassConstants)}, p.computeSetLayout, p.computeLayout);
 }
 
 }  // namespace
@@ -228,17 +234,8 @@ Pipelines createPipelines(const vk::VulkanContext& context, VkRenderPass renderP
        VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT | evaluation, nullptr},
       {ARBOR_BINDING_VISIBLE, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT, nullptr},
   }};
-  VkDescriptorSetLayoutCreateInfo setInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
-  setInfo.bindingCount = static_cast<std::uint32_t>(bindings.size());
-  setInfo.pBindings = bindings.data();
-  vk::check(vkCreateDescriptorSetLayout(device, &setInfo, nullptr, &p.setLayout), "vkCreateDescriptorSetLayout");
-  const VkPushConstantRange push{all, 0, sizeof(DrawConstants)};
-  VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
-  layoutInfo.setLayoutCount = 1;
-  layoutInfo.pSetLayouts = &p.setLayout;
-  layoutInfo.pushConstantRangeCount = 1;
-  layoutInfo.pPushConstantRanges = &push;
-  vk::check(vkCreatePipelineLayout(device, &layoutInfo, nullptr, &p.layout), "vkCreatePipelineLayout");
+  createLayouts(device, bindings.data(), static_cast<std::uint32_t>(bindings.size()), {all, 0, sizeof(DrawConstants)}, p.setLayout,
+                p.layout);
 
   PipelineSpec sky{{stage(VK_SHADER_STAGE_VERTEX_BIT, spirv_sky_vert), stage(VK_SHADER_STAGE_FRAGMENT_BIT, spirv_sky_frag)}};
   sky.depthWrite = false;

@@ -20,7 +20,11 @@ void RenderSession::setTree(const QuadMesh& mesh, const PatchSet& patches, const
 }
 
 FrameResult RenderSession::render(const Camera& camera, const RenderSettings& settings) {
-  return render(camera, settings, tree_ ? std::vector<TreeInstance>{{0, plantedModel(*tree_)}} : std::vector<TreeInstance>{});
+  return render(camera, settings, treeInstances());
+}
+
+std::vector<TreeInstance> RenderSession::treeInstances() const {
+  return tree_ ? std::vector<TreeInstance>{{0, plantedModel(*tree_)}} : std::vector<TreeInstance>{};
 }
 
 RenderSession::~RenderSession() {
@@ -31,26 +35,22 @@ RenderSession::~RenderSession() {
   if (commands_[0]) vkFreeCommandBuffers(context_.device(), context_.commandPool(), TreeRenderer::kFramesInFlight, commands_.data());
 }
 
-namespace {
-
-// The render pass over the offscreen target: clear, then what `inside` records.
-template <class Inside>
-void recordTargetPass(VkCommandBuffer cmd, const OffscreenTarget& target, Inside&& inside) {
+void RenderSession::recordFrame(VkCommandBuffer cmd, const Camera& camera, const RenderSettings& settings,
+                                const std::vector<TreeInstance>& instances) {
+  renderer_.beginFrame(cmd, camera, target_.extent(), settings, instances);
   std::array<VkClearValue, 3> clear{};
   clear[0].color = {{0.0f, 0.0f, 0.0f, 1.0f}};
   clear[1].depthStencil = {1.0f, 0};
   VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
-  begin.renderPass = target.renderPass();
-  begin.framebuffer = target.framebuffer();
-  begin.renderArea = {{0, 0}, target.extent()};
+  begin.renderPass = target_.renderPass();
+  begin.framebuffer = target_.framebuffer();
+  begin.renderArea = {{0, 0}, target_.extent()};
   begin.clearValueCount = static_cast<std::uint32_t>(clear.size());
   begin.pClearValues = clear.data();
   vkCmdBeginRenderPass(cmd, &begin, VK_SUBPASS_CONTENTS_INLINE);
-  inside();
+  renderer_.draw(cmd, target_.extent(), settings, instances);
   vkCmdEndRenderPass(cmd);
 }
-
-}  // namespace
 
 std::vector<double> RenderSession::renderInFlight(const Camera& camera, const RenderSettings& settings, const std::vector<TreeInstance>& instances,
                                                   int frames, FrameResult& last) {
@@ -86,8 +86,7 @@ std::vector<double> RenderSession::renderInFlight(const Camera& camera, const Re
     VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
     begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
     vk::check(vkBeginCommandBuffer(cmd, &begin), "vkBeginCommandBuffer");
-    renderer_.beginFrame(cmd, camera, target_.extent(), settings, instances);
-    recordTargetPass(cmd, target_, [&] { renderer_.draw(cmd, target_.extent(), settings, instances); });
+    recordFrame(cmd, camera, settings, instances);
     vk::check(vkEndCommandBuffer(cmd), "vkEndCommandBuffer");
     VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
     submit.commandBufferCount = 1;
@@ -108,19 +107,7 @@ std::vector<double> RenderSession::renderInFlight(const Camera& camera, const Re
 FrameResult RenderSession::render(const Camera& camera, const RenderSettings& settings, const std::vector<TreeInstance>& instances) {
   const auto start = std::chrono::steady_clock::now();
   context_.submitAndWait([&](VkCommandBuffer cmd) {
-    renderer_.beginFrame(cmd, camera, target_.extent(), settings, instances);
-    std::array<VkClearValue, 3> clear{};
-    clear[0].color = {{0.0f, 0.0f, 0.0f, 1.0f}};
-    clear[1].depthStencil = {1.0f, 0};
-    VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
-    begin.renderPass = target_.renderPass();
-    begin.framebuffer = target_.framebuffer();
-    begin.renderArea = {{0, 0}, target_.extent()};
-    begin.clearValueCount = static_cast<std::uint32_t>(clear.size());
-    begin.pClearValues = clear.data();
-    vkCmdBeginRenderPass(cmd, &begin, VK_SUBPASS_CONTENTS_INLINE);
-    renderer_.draw(cmd, target_.extent(), settings, instances);
-    vkCmdEndRenderPass(cmd);
+    recordFrame(cmd, camera, settings, instances);
     target_.recordReadback(cmd);
   });
   FrameResult result;

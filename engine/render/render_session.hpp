@@ -24,6 +24,8 @@ class RenderSession {
   void setTree(const QuadMesh& mesh, const PatchSet& patches, const std::vector<Leaf>& leaves = {},
                const std::vector<ImpostorSegment>& impostors = {});
   const GpuTree* tree() const { return tree_.get(); }
+  // The session's own tree planted where it stands (empty without one): what render(camera, settings) draws.
+  std::vector<TreeInstance> treeInstances() const;
   FrameResult render(const Camera& camera, const RenderSettings& settings);
   // The renderer's trees (set with renderer().setTrees) at these places: a forest.
   FrameResult render(const Camera& camera, const RenderSettings& settings, const std::vector<TreeInstance>& instances);
@@ -40,6 +42,9 @@ class RenderSession {
   const vk::VulkanContext& context_;
   OffscreenTarget target_;
   TreeRenderer renderer_;
+  // beginFrame, then the render pass over the target with the renderer's draws.
+  void recordFrame(VkCommandBuffer cmd, const Camera& camera, const RenderSettings& settings, const std::vector<TreeInstance>& instances);
+
   std::unique_ptr<GpuTree> tree_;
   std::array<VkCommandBuffer, TreeRenderer::kFramesInFlight> commands_{};
   std::array<VkFence, TreeRenderer::kFramesInFlight> fences_{};

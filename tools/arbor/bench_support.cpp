@@ -18,9 +18,7 @@ Figures summarize(std::vector<double> v) {
 TimedFrames timeFrames(render::RenderSession& session, const render::Camera& camera, const render::RenderSettings& settings, int frames,
                        const std::vector<render::TreeInstance>* instances) {
   TimedFrames t;
-  const std::vector<render::TreeInstance> single =
-      session.tree() ? std::vector<render::TreeInstance>{{0, render::plantedModel(*session.tree())}} : std::vector<render::TreeInstance>{};
-  const std::vector<render::TreeInstance>& drawn = instances ? *instances : single;
+  const std::vector<render::TreeInstance> drawn = instances ? *instances : session.treeInstances();
   t.last = session.render(camera, settings, drawn);  // warm-up, waited for: pipelines, control points, caches
   t.firstCpuMs = t.last.cpuMilliseconds;
   // The timed frames run as the viewer runs them, two in flight: each is the time between two completions.
