@@ -1,5 +1,7 @@
 // The arbor program as a user runs it: exit codes, messages naming file and field, nothing half-written.
 #include <catch2/catch.hpp>
+#include <algorithm>
+#include <cstring>
 #include <array>
 #include <cstdio>
 #include <filesystem>
@@ -24,6 +26,24 @@ std::string writeTemp(const std::string& name, const std::string& content) {
   const std::string path = arbor::test::tempPath(name);
   std::ofstream(path) << content;
   return path;
+}
+
+// The JSON chunk of a GLB file (after the 12-byte header and the chunk's 8-byte header).
+nlohmann::json readGlbJson(const std::string& path) {
+  const std::string bytes = arbor::readFile(path);
+  std::uint32_t length = 0;
+  REQUIRE(bytes.size() > 20);
+  std::memcpy(&length, bytes.data() + 12, 4);
+  return nlohmann::json::parse(bytes.substr(20, length));
+}
+
+// Every preset of every growth model: assets/presets/*.json and assets/lsystems/*.lsys, by name.
+std::vector<std::string> allPresets() {
+  std::vector<std::string> names;
+  for (const char* folder : {"presets", "lsystems"})
+    for (const auto& e : fs::directory_iterator(fs::path(ARBOR_ASSET_DIR) / folder)) names.push_back(e.path().stem().string());
+  std::sort(names.begin(), names.end());
+  return names;
 }
 
 }  // namespace
@@ -110,8 +130,8 @@ TEST_CASE("mesh takes a branch graph or a skeleton file, a skeleton meshes exact
   const std::string skeleton = arbor::test::tempPath("palm-skeleton.json"), direct = arbor::test::tempPath("palm-direct.obj"),
                     again = arbor::test::tempPath("palm-again.obj");
   REQUIRE(run("generate palm --seed 2 --quiet --out " + skeleton).exitCode == 0);
-  REQUIRE(run("generate palm --seed 2 --quiet --out " + direct).exitCode == 0);
-  REQUIRE(run("mesh " + skeleton + " --quiet --out " + again).exitCode == 0);
+  REQUIRE(run("generate palm --seed 2 --quiet --no-textures --out " + direct).exitCode == 0);
+  REQUIRE(run("mesh " + skeleton + " --quiet --no-textures --out " + again).exitCode == 0);
   CHECK(arbor::readFile(direct) == arbor::readFile(again));
   const Result species = run("species " + skeleton);
   CHECK(species.exitCode == 2);
@@ -171,8 +191,8 @@ TEST_CASE("grow writes the state after N iterations as a branch graph or a mesh,
 
   // The mesh of a tree grown to the end is the one `generate` writes for the model.
   const std::string grown = arbor::test::tempPath("grow-end.obj"), generated = arbor::test::tempPath("generate-end.obj");
-  REQUIRE(run("grow sc-around-sphere --seed 2 --out " + grown).exitCode == 0);
-  REQUIRE(run("generate sc-around-sphere --seed 2 --quiet --out " + generated).exitCode == 0);
+  REQUIRE(run("grow sc-around-sphere --seed 2 --no-textures --out " + grown).exitCode == 0);
+  REQUIRE(run("generate sc-around-sphere --seed 2 --no-textures --quiet --out " + generated).exitCode == 0);
   CHECK(arbor::readFile(grown) == arbor::readFile(generated));
 
   // A random space-colonization model is a file grow takes.
@@ -318,10 +338,51 @@ TEST_CASE("a generated tree as glTF and GLB passes the Khronos validator", "[cli
   }
 }
 
+TEST_CASE("every preset's complete export (levels of detail, cards, leaves, textures) passes the validator cleanly", "[cli][mesh][validator]") {
+  for (const std::string& preset : allPresets()) {
+    const std::string out = arbor::test::tempPath("complete-" + preset + ".glb");
+    const Result r = run("generate " + preset + " --lods 3 --quiet --out " + out);
+    INFO(preset << ": " << r.output);
+    REQUIRE(r.exitCode == 0);
+    const Result v = arbor::test::runCommand("node " + std::string(ARBOR_SOURCE_DIR) + "/tools/validate-gltf.mjs " + out + " 2>&1");
+    INFO(v.output);
+    CHECK(v.exitCode == 0);
+    CHECK_THAT(v.output, Catch::Contains(": 0 errors, 0 warnings"));
+    const nlohmann::json doc = readGlbJson(out);
+    bool leaves = false;  // L-system presets grow none
+    for (const auto& m : doc["materials"]) leaves = leaves || m["name"] == "leaves";
+    CHECK(doc["images"].size() == (leaves ? 3u : 2u));
+  }
+}
+
+TEST_CASE("an OBJ export brings its .mtl and textures beside it, or none with --no-textures", "[cli][mesh]") {
+  const std::string dir = arbor::test::tempPath("obj-textures");
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  REQUIRE(run("generate palm --quiet --out " + dir + "/palm.obj").exitCode == 0);
+  for (const char* file : {"palm.mtl", "palm_bark_color.png", "palm_bark_normal.png", "palm_leaf_atlas.png"}) {
+    INFO(file);
+    CHECK(fs::file_size(dir + "/" + file) > 100);
+  }
+  const std::string obj = arbor::readFile(dir + "/palm.obj");
+  CHECK_THAT(obj, Catch::Contains("mtllib palm.mtl") && Catch::Contains("\no leaves\n") && Catch::Contains("usemtl leaves"));
+  REQUIRE(run("generate palm --quiet --no-textures --no-leaves --out " + dir + "/bare.obj").exitCode == 0);
+  CHECK_FALSE(fs::exists(dir + "/bare.mtl"));
+  CHECK_FALSE(fs::exists(dir + "/bare_bark_color.png"));
+  const std::string bare = arbor::readFile(dir + "/bare.obj");
+  CHECK(bare.find("mtllib") == std::string::npos);
+  CHECK(bare.find("o leaves") == std::string::npos);
+  // Options that do not fit the file are refused before anything is written.
+  const Result lods = run("generate palm --lods 2 --out " + dir + "/lods.obj");
+  CHECK(lods.exitCode == 2);
+  CHECK_THAT(lods.output, Catch::Contains("--lods"));
+  CHECK_FALSE(fs::exists(dir + "/lods.obj"));
+}
+
 TEST_CASE("subdivided export has four times the quads per level", "[cli][mesh]") {
   const std::string coarse = arbor::test::tempPath("coarse.obj"), fine = arbor::test::tempPath("fine.obj");
-  REQUIRE(run("generate palm --quiet --out " + coarse).exitCode == 0);
-  REQUIRE(run("generate palm --quiet --subdivide 2 --out " + fine).exitCode == 0);
+  REQUIRE(run("generate palm --quiet --no-leaves --no-cards --out " + coarse).exitCode == 0);
+  REQUIRE(run("generate palm --quiet --no-leaves --no-cards --subdivide 2 --out " + fine).exitCode == 0);
   auto countFaces = [](const std::string& text) {
     std::size_t faces = 0;
     for (std::size_t at = 0; (at = text.find("\nf ", at)) != std::string::npos; ++at) ++faces;

@@ -17,6 +17,10 @@
 #include "export/gltf_export.hpp"
 #include "export/obj_export.hpp"
 #include "export/subdivide.hpp"
+#include "export/tree_asset.hpp"
+#include "growth/weber_penn/weber_penn.hpp"
+#include "image/png_io.hpp"
+#include "tree/build_tree.hpp"
 #include "test_support.hpp"
 
 using namespace arbor;
@@ -308,7 +312,7 @@ TEST_CASE("GLB chunks are consistent and the buffer is y up", "[export][gltf]") 
     CHECK(std::abs(glm::length(n) - 1.0f) < 1e-6f);
     CHECK(std::abs(glm::length(t) - 1.0f) < 1e-6f);
     CHECK(std::abs(glm::dot(n, t)) < 1e-6f);
-    CHECK(tangents[4 * i + 3] == 1.0f);
+    CHECK(std::abs(tangents[4 * i + 3]) == 1.0f);
     CHECK(n.y * m.normals[i].z > 0);  // the up component moved along with the positions
     CHECK(flip[i] == m.uvw[i].z);
   }
@@ -512,4 +516,184 @@ TEST_CASE("subdivision refuses non-manifold and malformed meshes", "[export][sub
     notARing.openBoundary = {0, 2, 1, 3};
     CHECK_THROWS_AS(subdivide(notARing, 1), std::invalid_argument);
   }
+}
+
+// ---------------------------------------------------------------- complete tree assets (issue 18)
+
+namespace {
+
+Skeleton growPreset(const std::string& name, int levels = 0) {
+  GrowthOptions o;
+  o.seed = 1;
+  o.levels = levels;
+  return generateSkeleton(test::loadPreset(name), o);
+}
+
+// A small opaque PNG (the validator decodes the images' headers), made by the project's own encoder.
+std::string pngOf(int size, std::uint8_t grey) {
+  Image image;
+  image.width = image.height = size;
+  image.rgba.assign(static_cast<std::size_t>(size * size * 4), grey);
+  return encodePng(image);
+}
+
+AssetTextures someTextures() { return {pngOf(8, 100), pngOf(8, 128), pngOf(8, 200)}; }
+
+}  // namespace
+
+TEST_CASE("leaf cards: one per leaf from its base to its tip, facing as the leaf, in its kind's atlas cell", "[export][cards]") {
+  std::vector<Leaf> leaves;
+  for (std::uint8_t kind = 0; kind < 4; ++kind) {
+    Leaf leaf;
+    leaf.position = Vec3(kind, 1.0, 2.0);
+    leaf.direction = glm::normalize(Vec3(0.3, 0.1, 1.0));
+    leaf.normal = glm::normalize(glm::cross(leaf.direction, Vec3(1, 0, 0)));
+    leaf.length = 0.1 + 0.01 * kind;
+    leaf.width = 0.03;
+    leaf.kind = kind;
+    leaves.push_back(leaf);
+  }
+  const CardMesh cards = leafCards(leaves);
+  REQUIRE(cards.quads.size() == leaves.size());
+  REQUIRE(cards.positions.size() == 4 * leaves.size());
+  for (std::size_t i = 0; i < leaves.size(); ++i) {
+    INFO("kind " << i);
+    const auto& q = cards.quads[i];
+    const glm::vec3 a = cards.positions[q[0]], b = cards.positions[q[1]], c = cards.positions[q[2]], d = cards.positions[q[3]];
+    const glm::vec3 base = 0.5f * (a + b), tip = 0.5f * (c + d);
+    CHECK(glm::distance(base, glm::vec3(leaves[i].position)) < 1e-6f);
+    CHECK(glm::distance(tip, glm::vec3(leaves[i].position + leaves[i].direction * leaves[i].length)) < 1e-6f);
+    CHECK(std::abs(glm::distance(a, b) - 2.0f * 0.03f / kLeafBladeShare[i]) < 1e-6f);
+    // Counter-clockwise about the leaf's normal, and every corner carries it.
+    const glm::vec3 face = glm::normalize(glm::cross(c - a, d - b));
+    CHECK(glm::dot(face, glm::vec3(leaves[i].normal)) > 0.9999f);
+    for (const std::uint32_t v : q) {
+      CHECK(glm::dot(cards.normals[v], glm::vec3(leaves[i].normal)) > 0.9999f);
+      // Inside the kind's cell of the 2 x 2 atlas; the tip at the cell's top (glTF's v grows down).
+      const glm::vec2 cell = glm::vec2(static_cast<float>(i % 2), static_cast<float>(i / 2)) * 0.5f;
+      const glm::vec2 t = cards.texcoords[v] - cell;
+      CHECK(t.x >= 0.0f);
+      CHECK(t.x <= 0.5f);
+      CHECK(t.y >= 0.0f);
+      CHECK(t.y <= 0.5f);
+    }
+    CHECK(cards.texcoords[q[2]].y < cards.texcoords[q[0]].y);
+  }
+}
+
+TEST_CASE("branch cards: two crossed cards per segment, as wide as the branch, bark v running on", "[export][cards]") {
+  const std::vector<ImpostorSegment> segments = {{Vec3(0, 0, 1), Vec3(0.5, 0, 2), 0.04, 0.03, 0.5, 1.5, 2},
+                                                 {Vec3(0.5, 0, 2), Vec3(0.5, 0, 2), 0.03, 0.02, 1.5, 1.5, 2},  // zero length: none
+                                                 {Vec3(0, 0, 0), Vec3(0, 0, 1), 0.05, 0.04, 0.0, 2.0, 3}};    // vertical
+  const CardMesh cards = branchCards(segments);
+  REQUIRE(cards.quads.size() == 4);
+  for (std::size_t k = 0; k < cards.quads.size(); ++k) {
+    const ImpostorSegment& s = segments[k < 2 ? 0 : 2];
+    const auto& q = cards.quads[k];
+    const glm::vec3 axis = glm::normalize(glm::vec3(s.to - s.from));
+    const glm::vec3 lo = 0.5f * (cards.positions[q[0]] + cards.positions[q[1]]), hi = 0.5f * (cards.positions[q[2]] + cards.positions[q[3]]);
+    CHECK(glm::distance(lo, glm::vec3(s.from) - axis * float(0.5 * s.fromRadius)) < 1e-6f);
+    CHECK(glm::distance(hi, glm::vec3(s.to) + axis * float(0.5 * s.toRadius)) < 1e-6f);
+    CHECK(std::abs(glm::distance(cards.positions[q[0]], cards.positions[q[1]]) - float(2 * s.fromRadius)) < 1e-6f);
+    CHECK(std::abs(glm::distance(cards.positions[q[2]], cards.positions[q[3]]) - float(2 * s.toRadius)) < 1e-6f);
+    CHECK(cards.texcoords[q[0]].y == float(s.fromV));
+    CHECK(cards.texcoords[q[2]].y == float(s.toV));
+    CHECK(std::abs(glm::dot(cards.normals[q[0]], axis)) < 1e-6f);
+  }
+  // The two cards of a segment are at right angles.
+  CHECK(std::abs(glm::dot(cards.normals[cards.quads[0][0]], cards.normals[cards.quads[1][0]])) < 1e-6f);
+}
+
+TEST_CASE("bark tangents run along +u with the handedness glTF's normal maps need", "[export][gltf]") {
+  const QuadMesh m = buildTree(growPreset("quaking-aspen", 2), BuildOptions{{}, false}).mesh.mesh;
+  const Glb glb = splitGlb(writeGlb(m, "aspen"));
+  const auto& attributes = glb.json["meshes"][0]["primitives"][0]["attributes"];
+  const auto normals = accessorFloats(glb.json, glb.binary, attributes["NORMAL"], 3);
+  const auto tangents = accessorFloats(glb.json, glb.binary, attributes["TANGENT"], 4);
+  // dP/du and dP/dv of each quad's first triangle, in glTF's axes, checked at its corners away from the mirror lines.
+  std::size_t checked = 0, along = 0, handed = 0;
+  auto yUp = [](glm::vec3 v) { return glm::vec3(v.x, v.z, -v.y); };
+  for (const auto& q : m.quads) {
+    const glm::vec3 e1 = yUp(m.positions[q[1]] - m.positions[q[0]]), e2 = yUp(m.positions[q[2]] - m.positions[q[0]]);
+    const glm::vec2 d1 = glm::vec2(m.uvw[q[1]] - m.uvw[q[0]]), d2 = glm::vec2(m.uvw[q[2]] - m.uvw[q[0]]);
+    const float r = d1.x * d2.y - d2.x * d1.y;
+    if (std::abs(r) < 1e-6f) continue;
+    const glm::vec3 dPdu = (e1 * d2.y - e2 * d1.y) / r, dPdv = (e2 * d1.x - e1 * d2.x) / r;
+    const std::uint32_t v = q[0];
+    if (std::abs(m.uvw[v].x - 0.5f) > 0.2f || m.level[v] != 1) continue;  // mirror lines at u = 0 and 1; joints on the trunk
+    const glm::vec3 n(normals[3 * v], normals[3 * v + 1], normals[3 * v + 2]);
+    const glm::vec3 t(tangents[4 * v], tangents[4 * v + 1], tangents[4 * v + 2]);
+    const float w = tangents[4 * v + 3];
+    REQUIRE(std::abs(w) == 1.0f);
+    ++checked;
+    along += glm::dot(t, dPdu) > 0.0f ? 1 : 0;
+    handed += glm::dot(glm::cross(n, t) * w, dPdv) < 0.0f ? 1 : 0;  // the bitangent points up the image, against v
+  }
+  CHECK(checked > 300);
+  CHECK(along >= checked * 99 / 100);
+  CHECK(handed >= checked * 99 / 100);
+}
+
+TEST_CASE("a complete asset: textures, cards, leaves shared by every level of detail, MSFT_lod, validator clean", "[export][gltf][validator]") {
+  const Skeleton skeleton = growPreset("quaking-aspen", 3);
+  TreeAssetOptions options;
+  options.lods = 3;
+  TreeAsset asset = makeTreeAsset(skeleton, "aspen", options);
+  asset.textures = someTextures();
+  REQUIRE(asset.lods.size() == 3);
+  CHECK(asset.lods[0].meshedLevels == 3);
+  CHECK(asset.lods[2].meshedLevels == 1);
+  CHECK(asset.lods[1].bark.quads.size() < asset.lods[0].bark.quads.size());
+  CHECK(asset.lods[2].branchCards.quads.size() > asset.lods[1].branchCards.quads.size());
+  CHECK(asset.leaves.quads.size() == skeleton.leaves.size());
+
+  const Glb glb = splitGlb(writeGlb(asset));
+  const auto& doc = glb.json;
+  CHECK(doc["extensionsUsed"] == nlohmann::json::array({"MSFT_lod"}));
+  CHECK(doc["scenes"][0]["nodes"] == nlohmann::json::array({0}));
+  CHECK(doc["nodes"][0]["extensions"]["MSFT_lod"]["ids"] == nlohmann::json::array({1, 2}));
+  CHECK(doc["nodes"][0]["extras"]["MSFT_screencoverage"].size() == 3);
+  CHECK(doc["images"].size() == 3);
+  for (const auto& image : doc["images"]) CHECK(image["mimeType"] == "image/png");
+  std::map<std::string, nlohmann::json> materials;
+  for (const auto& m : doc["materials"]) materials[m["name"]] = m;
+  REQUIRE(materials.count("bark") + materials.count("branch_cards") + materials.count("leaves") == 3);
+  CHECK(materials["bark"].contains("normalTexture"));
+  CHECK(materials["bark"]["pbrMetallicRoughness"].contains("baseColorTexture"));
+  CHECK(materials["leaves"]["alphaMode"] == "MASK");
+  CHECK(materials["leaves"]["doubleSided"] == true);
+  CHECK(materials["branch_cards"]["doubleSided"] == true);
+  // Level 0 has no cards (every level meshed); the leaves are the same accessors in all three.
+  CHECK(doc["meshes"][0]["primitives"].size() == 2);
+  CHECK(doc["meshes"][2]["primitives"].size() == 3);
+  CHECK(doc["meshes"][0]["primitives"][1] == doc["meshes"][2]["primitives"][2]);
+
+  for (const bool binary : {false, true}) {
+    const std::string path = writeTemp(std::string("aspen-asset") + (binary ? ".glb" : ".gltf"), binary ? writeGlb(asset) : writeGltf(asset));
+    const Run r = validate(path);
+    INFO(r.output);
+    CHECK(r.exitCode == 0);
+    CHECK_THAT(r.output, Contains(": 0 errors, 0 warnings"));
+  }
+}
+
+TEST_CASE("OBJ of an asset: cards as objects after the surface, read back as the surface alone", "[export][obj]") {
+  const Skeleton skeleton = growPreset("palm");
+  const TreeAsset asset = makeTreeAsset(skeleton, "palm", TreeAssetOptions{});
+  const QuadMesh& bark = asset.lods[0].bark;
+  std::ostringstream out;
+  writeObj(bark, false, out, Up::Y, "palm.mtl");
+  writeObjCards(asset.lods[0].branchCards, "branch_cards", "branch_cards", bark.vertexCount(), out);
+  writeObjCards(asset.leaves, "leaves", "leaves", bark.vertexCount() + asset.lods[0].branchCards.positions.size(), out);
+  const std::string text = out.str();
+  CHECK_THAT(text, Contains("\nmtllib palm.mtl\nusemtl bark\n") && Contains("\no leaves\nusemtl leaves\n"));
+  std::size_t faces = 0;
+  for (std::size_t at = text.find("\nf "); at != std::string::npos; at = text.find("\nf ", at + 1)) ++faces;
+  CHECK(faces == bark.quads.size() + asset.lods[0].branchCards.quads.size() + asset.leaves.quads.size());
+  const QuadMesh back = readObj(text, "palm.obj");
+  CHECK(back.quads == bark.quads);
+  CHECK(back.positions.size() == bark.positions.size());
+  const std::string mtl = writeMtl("c.png", "n.png", "a.png");
+  CHECK_THAT(mtl, Contains("newmtl bark") && Contains("map_Kd c.png") && Contains("map_Bump -bm 1 n.png") &&
+                      Contains("newmtl leaves") && Contains("map_d a.png"));
 }

@@ -163,3 +163,35 @@ BarkTextures makeBarkTextures(int size, std::uint32_t seed) {
 }
 
 }  // namespace arbor
+
+namespace arbor {
+
+Image normalMapFromHeight(const Image& height, double relief) {
+  if (height.width <= 0 || height.height <= 0 || height.rgba.size() != static_cast<std::size_t>(height.width) * static_cast<std::size_t>(height.height) * 4) {
+    throw std::invalid_argument("normalMapFromHeight: the height map is empty or its pixel buffer has the wrong size");
+  }
+  const int w = height.width, h = height.height;
+  auto at = [&](int x, int y) {
+    x = (x % w + w) % w;
+    y = (y % h + h) % h;
+    return height.rgba[(static_cast<std::size_t>(y) * static_cast<std::size_t>(w) + static_cast<std::size_t>(x)) * 4] / 255.0 * relief;
+  };
+  Image normals;
+  normals.width = w;
+  normals.height = h;
+  normals.rgba.resize(height.rgba.size());
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      const double dx = 0.5 * (at(x + 1, y) - at(x - 1, y));
+      const double dUp = 0.5 * (at(x, y - 1) - at(x, y + 1));  // rows grow down the image; green points up
+      const double length = std::sqrt(dx * dx + dUp * dUp + 1.0);
+      const double n[3] = {-dx / length, -dUp / length, 1.0 / length};
+      std::uint8_t* texel = &normals.rgba[(static_cast<std::size_t>(y) * static_cast<std::size_t>(w) + static_cast<std::size_t>(x)) * 4];
+      for (int c = 0; c < 3; ++c) texel[c] = static_cast<std::uint8_t>(std::lround(127.5 * (n[c] + 1.0)));
+      texel[3] = 255;
+    }
+  }
+  return normals;
+}
+
+}  // namespace arbor

@@ -17,3 +17,12 @@ struct BarkTextures {
 BarkTextures makeBarkTextures(int size, std::uint32_t seed);
 
 }  // namespace arbor
+
+namespace arbor {
+
+// A tangent-space normal map from a height map that tiles (central differences, wrapping at the edges), in
+// glTF's convention: red along +x (the image's right, +u), green up the image (against v), blue out. `relief`
+// is the height difference, in texels, of black to white. Opaque RGBA, the height map's size.
+Image normalMapFromHeight(const Image& height, double relief);
+
+}  // namespace arbor

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <vector>
 
@@ -97,6 +98,14 @@ struct BufferAssembly {
                          {"type", type}});
     return static_cast<int>(accessors.size() - 1);
   }
+
+  // Raw bytes (an image) in their own view; padded after so the next view stays 4-byte aligned.
+  int appendBytes(const std::string& bytes) {
+    bufferViews.push_back({{"buffer", 0}, {"byteOffset", binary.size()}, {"byteLength", bytes.size()}});
+    binary += bytes;
+    binary.append((4 - binary.size() % 4) % 4, '\0');
+    return static_cast<int>(bufferViews.size() - 1);
+  }
 };
 
 struct Asset {
@@ -104,7 +113,73 @@ struct Asset {
   std::string binary;
 };
 
-Asset buildAsset(const QuadMesh& mesh, const std::string& name) {
+constexpr int kLinear = 9729, kLinearMipmapLinear = 9987, kRepeat = 10497, kClampToEdge = 33071;
+
+// Per vertex, the direction of increasing u and the handedness glTF's normal maps need (bitangent = normal x
+// tangent * w points up the image, against v), from each face's texture-coordinate gradients. Where the flip
+// coordinate mirrors u (its front and back lines) the gradients cancel, and the stored along-branch tangent
+// gives the direction instead.
+struct BarkFrame {
+  Frame frame;
+  float handedness = 1.0f;  // TANGENT's w
+};
+
+std::vector<BarkFrame> barkFrames(const QuadMesh& mesh, const std::vector<glm::vec3>& faceNormals) {
+  std::vector<glm::dvec3> alongU(mesh.vertexCount(), glm::dvec3(0)), alongV(mesh.vertexCount(), glm::dvec3(0));
+  for (const auto& q : mesh.quads) {
+    for (const std::array<int, 3> t : {std::array<int, 3>{0, 1, 2}, std::array<int, 3>{0, 2, 3}}) {
+      const std::uint32_t a = q[static_cast<std::size_t>(t[0])], b = q[static_cast<std::size_t>(t[1])], c = q[static_cast<std::size_t>(t[2])];
+      const glm::dvec3 e1 = glm::dvec3(mesh.positions[b]) - glm::dvec3(mesh.positions[a]);
+      const glm::dvec3 e2 = glm::dvec3(mesh.positions[c]) - glm::dvec3(mesh.positions[a]);
+      const glm::dvec2 d1 = glm::dvec2(mesh.uvw[b]) - glm::dvec2(mesh.uvw[a]), d2 = glm::dvec2(mesh.uvw[c]) - glm::dvec2(mesh.uvw[a]);
+      const double r = d1.x * d2.y - d2.x * d1.y;
+      if (r == 0.0) continue;
+      // dP/du and dP/dv times the face's texture area, so larger faces weigh more.
+      const double sign = r > 0.0 ? 1.0 : -1.0;
+      const glm::dvec3 u = (e1 * d2.y - e2 * d1.y) * sign, v = (e2 * d1.x - e1 * d2.x) * sign;
+      for (const std::uint32_t i : {a, b, c}) {
+        alongU[i] += u;
+        alongV[i] += v;
+      }
+    }
+  }
+  std::vector<BarkFrame> frames(mesh.vertexCount());
+  for (std::size_t i = 0; i < mesh.vertexCount(); ++i) {
+    const glm::vec3 n = unitOr(mesh.normals[i], unitOr(faceNormals[i], glm::vec3(0, 0, 1)));
+    const glm::vec3 v = unitOr(glm::vec3(alongV[i]), unitOr(mesh.tangents[i], perpendicularTo(n)));
+    glm::vec3 u = glm::vec3(alongU[i]);
+    // u cancelled out (a mirror line): at right angles to v, either way round is as right as the other.
+    if (!(glm::length(u - n * glm::dot(n, u)) > 1e-3f * glm::length(u)) || glm::length(u) < 1e-20f) u = glm::cross(v, n);
+    const Frame f = orthonormalFrame(n, u, faceNormals[i]);
+    const float w = glm::dot(glm::cross(f.normal, f.tangent), v) < 0.0f ? 1.0f : -1.0f;
+    frames[i] = {f, w};
+  }
+  return frames;
+}
+
+struct Bounds {
+  glm::vec3 lo{std::numeric_limits<float>::max()}, hi{std::numeric_limits<float>::lowest()};
+  void add(const glm::vec3& p) {
+    lo = glm::min(lo, p);
+    hi = glm::max(hi, p);
+  }
+};
+
+// The validator compares these bounds with the data, so they are the floats' exact values, not rounded ones.
+void setBounds(Json& accessor, const Bounds& b) {
+  accessor["min"] = {static_cast<double>(b.lo.x), static_cast<double>(b.lo.y), static_cast<double>(b.lo.z)};
+  accessor["max"] = {static_cast<double>(b.hi.x), static_cast<double>(b.hi.y), static_cast<double>(b.hi.z)};
+}
+
+std::vector<std::uint32_t> flatten(const std::vector<std::array<std::uint32_t, 3>>& triangles) {
+  std::vector<std::uint32_t> indices;
+  indices.reserve(3 * triangles.size());
+  for (const auto& t : triangles) indices.insert(indices.end(), t.begin(), t.end());
+  return indices;
+}
+
+// The bark mesh's primitive attributes: POSITION, NORMAL, TANGENT, TEXCOORD_0 and Arbor's _RADIUS, _LEVEL, _FLIP.
+Json barkPrimitive(const QuadMesh& mesh, BufferAssembly& buffer, int material) {
   const char* context = "glTF export";
   exporting::requirePerVertex(mesh, mesh.normals.size(), "normals", context);
   exporting::requirePerVertex(mesh, mesh.tangents.size(), "tangents", context);
@@ -115,7 +190,14 @@ Asset buildAsset(const QuadMesh& mesh, const std::string& name) {
   if (mesh.quads.empty()) throw std::invalid_argument("glTF export: the mesh has no faces");
 
   const std::size_t n = mesh.vertexCount();
+  for (std::size_t i = 0; i < n; ++i) {
+    // A NaN or infinity would make the file invalid, and always means a bug upstream.
+    if (!isFinite(mesh.positions[i]) || !isFinite(mesh.uvw[i]) || !std::isfinite(mesh.radius[i])) {
+      throw std::invalid_argument("glTF export: vertex " + std::to_string(i) + " has a non-finite position, uvw or radius");
+    }
+  }
   const auto faceNormals = faceNormalSums(mesh);
+  const auto frames = barkFrames(mesh, faceNormals);
   std::vector<float> positions, normals, tangents, texcoords, radius, level, flip;
   positions.reserve(3 * n);
   normals.reserve(3 * n);
@@ -124,51 +206,169 @@ Asset buildAsset(const QuadMesh& mesh, const std::string& name) {
   radius.reserve(n);
   level.reserve(n);
   flip.reserve(n);
-  glm::vec3 lo(std::numeric_limits<float>::max()), hi(std::numeric_limits<float>::lowest());
+  Bounds bounds;
   for (std::size_t i = 0; i < n; ++i) {
-    // A NaN or infinity would make the file invalid, and always means a bug upstream.
-    if (!isFinite(mesh.positions[i]) || !isFinite(mesh.uvw[i]) || !std::isfinite(mesh.radius[i])) {
-      throw std::invalid_argument("glTF export: vertex " + std::to_string(i) + " has a non-finite position, uvw or radius");
-    }
     const glm::vec3 p = yUp(mesh.positions[i]);
-    lo = glm::min(lo, p);
-    hi = glm::max(hi, p);
+    bounds.add(p);
     appendFloats(positions, p);
-    const Frame f = orthonormalFrame(mesh.normals[i], mesh.tangents[i], faceNormals[i]);
-    appendFloats(normals, yUp(f.normal));
-    appendFloats(tangents, yUp(f.tangent));
-    tangents.push_back(1.0f);
+    appendFloats(normals, yUp(frames[i].frame.normal));
+    appendFloats(tangents, yUp(frames[i].frame.tangent));
+    tangents.push_back(frames[i].handedness);
     texcoords.insert(texcoords.end(), {mesh.uvw[i].x, mesh.uvw[i].y});
     radius.push_back(mesh.radius[i]);
     level.push_back(static_cast<float>(mesh.level[i]));
     flip.push_back(mesh.uvw[i].z);
   }
-  std::vector<std::uint32_t> indices;
-  for (const auto& t : triangulate(mesh)) indices.insert(indices.end(), t.begin(), t.end());
-
-  BufferAssembly buffer;
   Json attributes;
   attributes["POSITION"] = buffer.append(positions, n, "VEC3", kFloat, kArrayBuffer);
-  // The validator compares these bounds with the data, so they are the floats' exact values, not rounded ones.
-  buffer.accessors.back()["min"] = {static_cast<double>(lo.x), static_cast<double>(lo.y), static_cast<double>(lo.z)};
-  buffer.accessors.back()["max"] = {static_cast<double>(hi.x), static_cast<double>(hi.y), static_cast<double>(hi.z)};
+  setBounds(buffer.accessors.back(), bounds);
   attributes["NORMAL"] = buffer.append(normals, n, "VEC3", kFloat, kArrayBuffer);
   attributes["TANGENT"] = buffer.append(tangents, n, "VEC4", kFloat, kArrayBuffer);
   attributes["TEXCOORD_0"] = buffer.append(texcoords, n, "VEC2", kFloat, kArrayBuffer);
   attributes["_RADIUS"] = buffer.append(radius, n, "SCALAR", kFloat, kArrayBuffer);
   attributes["_LEVEL"] = buffer.append(level, n, "SCALAR", kFloat, kArrayBuffer);
   attributes["_FLIP"] = buffer.append(flip, n, "SCALAR", kFloat, kArrayBuffer);
+  const auto indices = flatten(triangulate(mesh));
   const int indexAccessor = buffer.append(indices, indices.size(), "SCALAR", kUnsignedInt, kElementArrayBuffer);
+  return {{"attributes", attributes}, {"indices", indexAccessor}, {"material", material}, {"mode", kTriangles}};
+}
 
+// Cards (leaves, fake branches): each quad as two triangles; the cards' frames are exact already.
+// Tangents only where the material has a normal map (the validator notes unused ones).
+Json cardPrimitive(const CardMesh& cards, BufferAssembly& buffer, int material, bool tangents) {
+  const std::size_t n = cards.positions.size();
+  if (cards.normals.size() != n || cards.tangents.size() != n || cards.texcoords.size() != n) {
+    throw std::invalid_argument("glTF export: a card mesh needs one normal, tangent and texture coordinate per corner");
+  }
+  std::vector<float> positions, normals, frames, texcoords;
+  Bounds bounds;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!isFinite(cards.positions[i])) throw std::invalid_argument("glTF export: card corner " + std::to_string(i) + " is not finite");
+    const glm::vec3 p = yUp(cards.positions[i]);
+    bounds.add(p);
+    appendFloats(positions, p);
+    appendFloats(normals, yUp(cards.normals[i]));
+    appendFloats(frames, yUp(glm::vec3(cards.tangents[i])));
+    frames.push_back(cards.tangents[i].w);
+    texcoords.insert(texcoords.end(), {cards.texcoords[i].x, cards.texcoords[i].y});
+  }
+  std::vector<std::uint32_t> indices;
+  indices.reserve(6 * cards.quads.size());
+  for (const auto& q : cards.quads) {
+    for (const std::uint32_t v : q) {
+      if (v >= n) throw std::invalid_argument("glTF export: a card indexes past its corners");
+    }
+    indices.insert(indices.end(), {q[0], q[1], q[2], q[0], q[2], q[3]});
+  }
+  Json attributes;
+  attributes["POSITION"] = buffer.append(positions, n, "VEC3", kFloat, kArrayBuffer);
+  setBounds(buffer.accessors.back(), bounds);
+  attributes["NORMAL"] = buffer.append(normals, n, "VEC3", kFloat, kArrayBuffer);
+  if (tangents) attributes["TANGENT"] = buffer.append(frames, n, "VEC4", kFloat, kArrayBuffer);
+  attributes["TEXCOORD_0"] = buffer.append(texcoords, n, "VEC2", kFloat, kArrayBuffer);
+  const int indexAccessor = buffer.append(indices, indices.size(), "SCALAR", kUnsignedInt, kElementArrayBuffer);
+  return {{"attributes", attributes}, {"indices", indexAccessor}, {"material", material}, {"mode", kTriangles}};
+}
+
+// Materials, textures, images and samplers, each added only when something uses it.
+struct MaterialSet {
+  const AssetTextures& files;
+  BufferAssembly& buffer;
+  Json materials = Json::array(), textures = Json::array(), images = Json::array(), samplers = Json::array();
+  int bark = -1, branchCards = -1, leaves = -1;
+  int repeatSampler = -1, clampSampler = -1;
+
+  int texture(const std::string& png, const char* name, bool repeat) {
+    int& sampler = repeat ? repeatSampler : clampSampler;
+    if (sampler < 0) {
+      const int wrap = repeat ? kRepeat : kClampToEdge;
+      samplers.push_back({{"magFilter", kLinear}, {"minFilter", kLinearMipmapLinear}, {"wrapS", wrap}, {"wrapT", wrap}});
+      sampler = static_cast<int>(samplers.size() - 1);
+    }
+    images.push_back({{"name", name}, {"bufferView", buffer.appendBytes(png)}, {"mimeType", "image/png"}});
+    textures.push_back({{"sampler", sampler}, {"source", images.size() - 1}});
+    return static_cast<int>(textures.size() - 1);
+  }
+
+  int barkMaterial(bool doubleSided) {
+    int& slot = doubleSided ? branchCards : bark;
+    if (slot >= 0) return slot;
+    Json pbr = {{"baseColorFactor", {0.30, 0.22, 0.15, 1.0}}, {"metallicFactor", 0.0}, {"roughnessFactor", 0.9}};
+    Json material = {{"name", doubleSided ? "branch_cards" : "bark"}};
+    if (!files.barkColor.empty()) {
+      const int other = doubleSided ? bark : branchCards;  // both share the bark's textures
+      pbr["baseColorFactor"] = {1.0, 1.0, 1.0, 1.0};
+      pbr["baseColorTexture"] = {{"index", other >= 0 ? materials[static_cast<std::size_t>(other)]["pbrMetallicRoughness"]["baseColorTexture"]["index"].get<int>()
+                                                      : texture(files.barkColor, "bark_color", true)}};
+    }
+    material["pbrMetallicRoughness"] = pbr;
+    if (!files.barkNormal.empty()) {
+      const int other = doubleSided ? bark : branchCards;
+      material["normalTexture"] = {{"index", other >= 0 ? materials[static_cast<std::size_t>(other)]["normalTexture"]["index"].get<int>()
+                                                        : texture(files.barkNormal, "bark_normal", true)}};
+    }
+    if (doubleSided) material["doubleSided"] = true;
+    materials.push_back(std::move(material));
+    return slot = static_cast<int>(materials.size() - 1);
+  }
+
+  int leafMaterial() {
+    if (leaves >= 0) return leaves;
+    Json pbr = {{"baseColorFactor", {0.25, 0.45, 0.15, 1.0}}, {"metallicFactor", 0.0}, {"roughnessFactor", 0.7}};
+    Json material = {{"name", "leaves"}};
+    if (!files.leafAtlas.empty()) {
+      pbr["baseColorFactor"] = {1.0, 1.0, 1.0, 1.0};
+      pbr["baseColorTexture"] = {{"index", texture(files.leafAtlas, "leaf_atlas", false)}};
+      material["alphaMode"] = "MASK";  // the atlas's cutouts: the renderer discards below 0.5 too
+      material["alphaCutoff"] = 0.5;
+    }
+    material["pbrMetallicRoughness"] = pbr;
+    material["doubleSided"] = true;
+    materials.push_back(std::move(material));
+    return leaves = static_cast<int>(materials.size() - 1);
+  }
+};
+
+// What each level of detail is for, as MSFT_lod's screen coverage: the share of the screen's height below which
+// the viewer moves to the next one (the last: below which the tree is not drawn).
+constexpr double kScreenCoverage[] = {0.5, 0.2, 0.08, 0.03, 0.01};
+
+Asset buildAsset(const TreeAsset& tree) {
+  if (tree.lods.empty()) throw std::invalid_argument("glTF export: the asset has no level of detail");
+  BufferAssembly buffer;
+  MaterialSet materials{tree.textures, buffer};
+  Json meshes = Json::array(), nodes = Json::array();
+  std::optional<Json> leafPrimitive;
+  if (!tree.leaves.empty()) leafPrimitive = cardPrimitive(tree.leaves, buffer, materials.leafMaterial(), false);
+  for (const AssetLod& lod : tree.lods) {
+    Json primitives = Json::array({barkPrimitive(lod.bark, buffer, materials.barkMaterial(false))});
+    if (!lod.branchCards.empty()) primitives.push_back(cardPrimitive(lod.branchCards, buffer, materials.barkMaterial(true), !tree.textures.barkNormal.empty()));
+    if (leafPrimitive) primitives.push_back(*leafPrimitive);  // the same accessors in every level of detail
+    meshes.push_back({{"name", lod.name}, {"primitives", std::move(primitives)}});
+    nodes.push_back({{"name", lod.name}, {"mesh", meshes.size() - 1}});
+  }
+  nodes[0]["name"] = tree.name;
   Json doc;
   doc["asset"] = {{"version", "2.0"}, {"generator", "Arbor"}};
+  if (tree.lods.size() > 1) {
+    // The coarser levels hang off the finest node only through the extension, so viewers without it show the finest.
+    Json ids = Json::array(), coverage = Json::array();
+    for (std::size_t i = 1; i < tree.lods.size(); ++i) ids.push_back(i);
+    for (std::size_t i = 0; i < tree.lods.size(); ++i) coverage.push_back(kScreenCoverage[std::min<std::size_t>(i, std::size(kScreenCoverage) - 1)]);
+    nodes[0]["extensions"] = {{"MSFT_lod", {{"ids", ids}}}};
+    nodes[0]["extras"] = {{"MSFT_screencoverage", coverage}};
+    doc["extensionsUsed"] = Json::array({"MSFT_lod"});
+  }
   doc["scene"] = 0;
-  doc["scenes"] = Json::array({{{"name", name}, {"nodes", Json::array({0})}}});
-  doc["nodes"] = Json::array({{{"name", name}, {"mesh", 0}}});
-  Json primitive = {{"attributes", attributes}, {"indices", indexAccessor}, {"material", 0}, {"mode", kTriangles}};
-  doc["meshes"] = Json::array({{{"name", name}, {"primitives", Json::array({primitive})}}});
-  Json pbr = {{"baseColorFactor", {0.30, 0.22, 0.15, 1.0}}, {"metallicFactor", 0.0}, {"roughnessFactor", 0.9}};
-  doc["materials"] = Json::array({{{"name", "bark"}, {"pbrMetallicRoughness", pbr}}});
+  doc["scenes"] = Json::array({{{"name", tree.name}, {"nodes", Json::array({0})}}});
+  doc["nodes"] = std::move(nodes);
+  doc["meshes"] = std::move(meshes);
+  doc["materials"] = std::move(materials.materials);
+  if (!materials.textures.empty()) {
+    doc["textures"] = std::move(materials.textures);
+    doc["images"] = std::move(materials.images);
+    doc["samplers"] = std::move(materials.samplers);
+  }
   doc["accessors"] = std::move(buffer.accessors);
   doc["bufferViews"] = std::move(buffer.bufferViews);
   doc["buffers"] = Json::array({{{"byteLength", buffer.binary.size()}}});
@@ -208,14 +408,18 @@ std::uint32_t glbLength(std::size_t size) {
 
 }  // namespace
 
-std::string writeGltf(const QuadMesh& mesh, const std::string& name) {
-  Asset asset = buildAsset(mesh, name);
+std::string writeGltf(const QuadMesh& mesh, const std::string& name) { return writeGltf(barkOnlyAsset(mesh, name)); }
+
+std::string writeGlb(const QuadMesh& mesh, const std::string& name) { return writeGlb(barkOnlyAsset(mesh, name)); }
+
+std::string writeGltf(const TreeAsset& tree) {
+  Asset asset = buildAsset(tree);
   asset.document["buffers"][0]["uri"] = "data:application/octet-stream;base64," + base64(asset.binary);
   return dumpJson(asset.document, 2) + "\n";
 }
 
-std::string writeGlb(const QuadMesh& mesh, const std::string& name) {
-  const Asset asset = buildAsset(mesh, name);
+std::string writeGlb(const TreeAsset& tree) {
+  const Asset asset = buildAsset(tree);
   std::string json = dumpJson(asset.document, -1);
   json.append((4 - json.size() % 4) % 4, ' ');  // chunks start on 4-byte boundaries; JSON pads with spaces
   std::string binary = asset.binary;

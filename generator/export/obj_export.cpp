@@ -133,7 +133,9 @@ std::optional<Quad> joinTriangles(const Triangle& first, const Triangle& second)
 
 }  // namespace
 
-void writeObj(const QuadMesh& mesh, bool triangles, std::ostream& stream, Up up) {
+void writeObj(const QuadMesh& mesh, bool triangles, std::ostream& stream, Up up) { writeObj(mesh, triangles, stream, up, {}); }
+
+void writeObj(const QuadMesh& mesh, bool triangles, std::ostream& stream, Up up, const std::string& mtlFile) {
   exporting::requirePerVertex(mesh, mesh.normals.size(), "normals", "writeObj");
   exporting::requirePerVertex(mesh, mesh.uvw.size(), "uvw", "writeObj");
   exporting::requireQuadIndicesInRange(mesh, "writeObj");
@@ -174,6 +176,10 @@ void writeObj(const QuadMesh& mesh, bool triangles, std::ostream& stream, Up up)
                              " vertices, " + std::to_string(faceCount) + (triangles ? " triangles" : " quads") +
                              "; vt is (u, v), the flip coordinate is not stored\n";
   stream.write(header.data(), static_cast<std::streamsize>(header.size()));
+  if (!mtlFile.empty()) {
+    const std::string materials = "mtllib " + mtlFile + "\nusemtl bark\n";
+    stream.write(materials.data(), static_cast<std::streamsize>(materials.size()));
+  }
 
   std::vector<std::string> text(blocks.size());
   std::vector<char> printed(blocks.size(), 0);
@@ -210,6 +216,39 @@ std::string writeObj(const QuadMesh& mesh, bool triangles, Up up) {
   return std::move(out).str();
 }
 
+void writeObjCards(const CardMesh& cards, const std::string& object, const std::string& material, std::size_t verticesBefore,
+                   std::ostream& stream, Up up) {
+  const auto axes = [up](const glm::vec3& p) { return up == Up::Y ? glm::vec3(p.x, p.z, -p.y) : p; };
+  std::string out = "o " + object + "\n";
+  if (!material.empty()) out += "usemtl " + material + "\n";
+  for (const glm::vec3& p : cards.positions) {
+    const glm::vec3 q = axes(p);
+    appendLine(out, "v", {q.x, q.y, q.z});
+  }
+  // OBJ's v grows up the image, glTF's (and the cards') down it.
+  for (const glm::vec2& t : cards.texcoords) appendLine(out, "vt", {t.x, 1.0f - t.y});
+  for (const glm::vec3& n : cards.normals) {
+    const glm::vec3 q = axes(n);
+    appendLine(out, "vn", {q.x, q.y, q.z});
+  }
+  for (const auto& q : cards.quads) {
+    std::array<std::uint32_t, 4> corners{};
+    for (std::size_t k = 0; k < 4; ++k) corners[k] = static_cast<std::uint32_t>(q[k] + verticesBefore);
+    appendFace(out, corners);
+  }
+  stream.write(out.data(), static_cast<std::streamsize>(out.size()));
+}
+
+std::string writeMtl(const std::string& barkColor, const std::string& barkNormal, const std::string& leafAtlas) {
+  std::string out = "# Arbor tree materials\n";
+  for (const char* bark : {"bark", "branch_cards"}) {
+    out += std::string("\nnewmtl ") + bark + "\nKa 0 0 0\nKd 1 1 1\nKs 0 0 0\nNs 10\nillum 1\n";
+    out += "map_Kd " + barkColor + "\nmap_Bump -bm 1 " + barkNormal + "\n";
+  }
+  out += "\nnewmtl leaves\nKa 0 0 0\nKd 1 1 1\nKs 0 0 0\nNs 10\nillum 1\nmap_Kd " + leafAtlas + "\nmap_d " + leafAtlas + "\n";
+  return out;
+}
+
 QuadMesh readObj(const std::string& text, const std::string& file) {
   QuadMesh mesh;
   Reader reader{file};
@@ -229,6 +268,8 @@ QuadMesh readObj(const std::string& text, const std::string& file) {
 
     const std::string_view keyword = w[0];
     const std::size_t arguments = w.size() - 1;
+    // Cards (leaves, fake branches) follow the tree's surface as objects of their own.
+    if (keyword == "o" && arguments == 1 && isObjCardObject(w[1])) break;
     if (keyword == "v" || keyword == "vn") {
       if (arguments != 3) reader.fail(std::string(keyword) + " needs 3 numbers, found " + std::to_string(arguments));
       glm::vec3 value(reader.number(w[1]), reader.number(w[2]), reader.number(w[3]));

@@ -4,8 +4,10 @@
 // One vertex carries one position, one texture coordinate and one normal, so every face corner is "i/i/i".
 #include <ostream>
 #include <string>
+#include <string_view>
 
 #include "mesh/quad_mesh.hpp"
+#include "tree_asset.hpp"
 
 namespace arbor {
 
@@ -20,8 +22,24 @@ std::string writeObj(const QuadMesh& mesh, bool triangles, Up up = Up::Y);
 // The same, streamed a megabyte at a time (a tree's OBJ is tens of megabytes).
 void writeObj(const QuadMesh& mesh, bool triangles, std::ostream& out, Up up = Up::Y);
 
+// The same with `mtllib mtlFile` and `usemtl bark` before the faces (no statements when mtlFile is empty).
+void writeObj(const QuadMesh& mesh, bool triangles, std::ostream& out, Up up, const std::string& mtlFile);
+
+// The objects cards are written as; readers of the tree's surface stop where the first of them begins.
+inline bool isObjCardObject(std::string_view name) { return name == "branch_cards" || name == "leaves"; }
+
+// Cards after a mesh in the same file: `o object`, `usemtl material` (unless empty), their v, vt, vn and one
+// quad per card, numbered after the `verticesBefore` vertices already in the file.
+void writeObjCards(const CardMesh& cards, const std::string& object, const std::string& material, std::size_t verticesBefore,
+                   std::ostream& out, Up up = Up::Y);
+
+// The .mtl for an OBJ of a tree asset: materials bark, branch_cards and leaves (alpha from the atlas), naming the
+// PNG files given (relative to the .mtl). Blender reads map_Bump as the normal map.
+std::string writeMtl(const std::string& barkColor, const std::string& barkNormal, const std::string& leafAtlas);
+
 // Reads what writeObj writes: v, vt, vn and f lines with 1-based "a/a/a" corners; comments, o, g, s,
-// mtllib and usemtl are skipped. Triangles must come in the consecutive pairs writeObj emits, and each
+// mtllib and usemtl are skipped, and `o branch_cards` or `o leaves` ends the mesh (the cards that
+// follow the tree's surface are not part of it). Triangles must come in the consecutive pairs writeObj emits, and each
 // pair is joined back into its quad (QuadMesh holds quads only). The result has positions, normals,
 // uvw (w = 0) and quads; tangents, radius, level and openBoundary are not in OBJ and stay empty. A file
 // whose Arbor header says "y up" is turned back to z up.

@@ -30,8 +30,7 @@ struct GenerateOptions {
   std::string out;
   bool quiet = false;
   MeshOptions mesh;
-  bool triangles = false;
-  std::string up = "y";  // the OBJ's up axis
+  ExportChoices exported;
   int subdivide = 0;
 };
 
@@ -62,15 +61,13 @@ void printNotes(const std::string& species, const ImportNotes& notes) {
 int runGenerate(const GenerateOptions& o) {
   const OutputType type = outputType(o.out);
   requireOutputFile(o.out);
-  if (o.up != "y" && type != OutputType::Obj) {
+  if (type == OutputType::Skeleton && (o.subdivide > 0 || o.exported.triangles || o.exported.lods > 0)) {
+    throw InputError(o.out, "--out", "--subdivide, --lods and --triangles apply to meshes (.obj, .gltf, .glb), not to a skeleton");
+  }
+  if (type == OutputType::Skeleton && o.exported.up != "y") {
     throw InputError(o.out, "--up", "applies to .obj only (glTF is y up by its specification; the skeleton keeps Arbor's z up)");
   }
-  if (o.triangles && type != OutputType::Obj) {
-    throw InputError(o.out, "--triangles", "applies to .obj only (glTF and GLB always hold triangles; a skeleton none)");
-  }
-  if (type == OutputType::Skeleton && (o.subdivide > 0 || o.triangles)) {
-    throw InputError(o.out, "--out", "--subdivide and --triangles apply to meshes (.obj, .gltf, .glb), not to a skeleton");
-  }
+  const TreeFileOptions fileOptions = type == OutputType::Skeleton ? TreeFileOptions{} : treeFileOptions(o.out, o.exported, o.mesh, o.subdivide);
   ImportNotes notes;
   const TreeSource source = loadTreeArgument(o.species, &notes, o.angles);
   if (!o.quiet) printNotes(o.species, notes);
@@ -85,21 +82,11 @@ int runGenerate(const GenerateOptions& o) {
   const auto t1 = Clock::now();
 
   TreeMesh tree;
-  QuadMesh subdivided;
   double meshMs = 0.0;
   if (type != OutputType::Skeleton) {
     tree = buildTree(skeleton, BuildOptions{o.mesh, false}).mesh;  // patches are counted on another core below
     meshMs = ms(t1, Clock::now());
-    if (o.subdivide > 0) {
-      // Subdividing a large tree takes seconds: say what is happening rather than sit silent.
-      if (!o.quiet)
-        std::fprintf(stderr, "arbor generate: meshed %zu quads in %.0f ms; subdividing %d time%s (about %zu quads)...\n", tree.mesh.quads.size(), meshMs,
-                     o.subdivide, o.subdivide > 1 ? "s" : "", tree.mesh.quads.size() << (2 * o.subdivide));
-      subdivided = subdivide(tree.mesh, o.subdivide);
-      if (!o.quiet) std::fprintf(stderr, "arbor generate: subdivided in %.0f ms; writing %s...\n", ms(t1, Clock::now()) - meshMs, o.out.c_str());
-    }
   }
-  const QuadMesh& exported = o.subdivide > 0 ? subdivided : tree.mesh;
   // The summary's topology and patch counts are worked out on another core while the file is written.
   struct MeshSummary {
     MeshTopologyReport topology;
@@ -109,8 +96,19 @@ int runGenerate(const GenerateOptions& o) {
   if (!o.quiet && type != OutputType::Skeleton) {
     summary = std::async(std::launch::async, [&tree] { return MeshSummary{checkTopology(tree.mesh), buildPatches(tree.mesh)}; });
   }
-  if (type == OutputType::Skeleton) writeFileAtomically(o.out, [&](std::ostream& out) { writeSkeletonJson(skeleton, out); });
-  else writeMeshFile(o.out, exported, source.name(), MeshFileOptions{o.triangles, o.up == "z" ? Up::Z : Up::Y});
+  if (type == OutputType::Skeleton) {
+    writeFileAtomically(o.out, [&](std::ostream& out) { writeSkeletonJson(skeleton, out); });
+  } else {
+    // Levels of detail, subdivision and textures take seconds on large trees: say what is happening.
+    auto progress = [&](const std::string& step) {
+      if (!o.quiet) std::fprintf(stderr, "arbor generate: %6.0f ms  %s\n", ms(t0, Clock::now()), step.c_str());
+    };
+    if (o.subdivide > 0) {
+      progress("meshed " + std::to_string(tree.mesh.quads.size()) + " quads; subdividing " + std::to_string(o.subdivide) +
+               " time(s) (about " + std::to_string(tree.mesh.quads.size() << (2 * o.subdivide)) + " quads at the finest level)");
+    }
+    writeTreeFile(o.out, skeleton, source.name(), fileOptions, &tree.mesh, progress);
+  }
   if (o.quiet) return 0;
 
   const SkeletonStats stats = skeletonStats(skeleton);
@@ -146,7 +144,7 @@ int runGenerate(const GenerateOptions& o) {
                 patches.size() - regular - fallback, fallback);
     if (o.subdivide > 0) {
       std::printf("  exported         %zu quads after %d Catmull-Clark levels (OpenSubdiv, limit positions)\n",
-                  exported.quads.size(), o.subdivide);
+                  tree.mesh.quads.size() << (2 * o.subdivide), o.subdivide);
     }
   }
   std::printf("wrote %s\n", o.out.c_str());
@@ -167,8 +165,9 @@ void addOptions(CLI::App* cmd, GenerateOptions& o, const char* input) {
   cmd->add_option("--levels", o.levels, "Stem levels to grow (default: the model's Levels; a skeleton or graph file keeps its own)")
       ->check(Whole(1, 8));
   cmd->add_option("--out", o.out,
-                  "Output file: .json writes the skeleton; .obj (quads), .gltf or .glb (triangles, with _RADIUS, "
-                  "_LEVEL and _FLIP attributes) write the mesh")
+                  "Output file: .json writes the skeleton; .obj (quads; a .mtl and PNG textures beside it), .gltf or .glb "
+                  "(triangles with _RADIUS, _LEVEL and _FLIP attributes, textures inside, levels of detail) write the tree "
+                  "with its leaf and fake-branch cards")
       ->required();
   cmd->add_option("--ring-spacing", o.mesh.ringSpacing,
                   "Extra cross sections wherever rings are farther apart than this many local radii (0: off)")
@@ -181,11 +180,8 @@ void addOptions(CLI::App* cmd, GenerateOptions& o, const char* input) {
   cmd->add_option("--mesh-levels", o.mesh.levels, "Mesh only stems of levels below this (0: all)")
       ->check(Whole(0, 8));
   cmd->add_flag("--open-base", o.mesh.openBase, "Leave the ring at the trunk base open (closed by default)");
-  cmd->add_flag("--triangles", o.triangles, "Write triangles instead of quads to .obj");
-  cmd->add_option("--up", o.up, "The .obj's up axis: y (as Blender and most tools import OBJ) or z (Arbor's own axes)")
-      ->check(CLI::IsMember({"y", "z"}))
-      ->capture_default_str();
-  cmd->add_option("--subdivide", o.subdivide, "Export the mesh after N Catmull-Clark levels (OpenSubdiv)")
+  addExportOptions(cmd, o.exported);
+  cmd->add_option("--subdivide", o.subdivide, "Export the bark mesh (every level of detail) after N Catmull-Clark levels (OpenSubdiv)")
       ->check(Whole(0, 6));
   cmd->add_flag("--quiet", o.quiet, "Print nothing on success");
 }

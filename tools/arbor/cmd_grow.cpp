@@ -31,7 +31,7 @@ struct GrowOptions {
   std::uint32_t steps = 0;          // iterations (growth ages); 0: to the end
   std::size_t stepSize = 10'000;    // nodes processed per pause (Patrick et al.'s step size)
   std::uint64_t seed = 1;
-  std::string up = "y";  // the OBJ's up axis
+  ExportChoices exported;
 };
 
 struct BenchGrowOptions {
@@ -58,11 +58,17 @@ std::size_t enabledNodes(const sc::Colonizer& c) {
 }
 
 int runGrow(const GrowOptions& o) {
-  const bool graph = endsWith(o.out, ".json"), obj = endsWith(o.out, ".obj");
-  if (!graph && !obj) {
-    throw InputError(o.out, "--out", "unsupported output type; allowed: .json (the enabled nodes as an arbor-graph/1 branch graph) or .obj (the closed quad mesh)");
+  const bool graph = endsWith(o.out, ".json");
+  if (!graph && !isMeshFile(o.out)) {
+    throw InputError(o.out, "--out", "unsupported output type; allowed: .json (the enabled nodes as an arbor-graph/1 branch graph), "
+                                     ".obj, .gltf or .glb (the tree as generate writes it)");
   }
   requireOutputFile(o.out);
+  if (graph && (o.exported.triangles || o.exported.lods > 0 || o.exported.up != "y")) {
+    throw InputError(o.out, "--out", "--lods, --triangles and --up apply to mesh files (.obj, .gltf, .glb), not to a branch graph");
+  }
+  // Checked before growing, so a refused option never costs a whole growth.
+  const TreeFileOptions fileOptions = graph ? TreeFileOptions{} : treeFileOptions(o.out, o.exported);
   const sc::SpaceColonization model = loadColonization(o.model);
   const TreeLimits limits;
   const std::uint32_t until = o.steps == 0 ? std::numeric_limits<std::uint32_t>::max() : o.steps;
@@ -89,7 +95,7 @@ int runGrow(const GrowOptions& o) {
     // The tree build stage every command uses, as `arbor generate` meshes a model grown to the end.
     const Skeleton skeleton = colonizationSkeleton(colonizer, model, o.seed, limits);
     const TreeMesh tree = buildTree(skeleton, BuildOptions{{}, false}).mesh;
-    writeMeshFile(o.out, tree.mesh, model.name, MeshFileOptions{false, o.up == "z" ? Up::Z : Up::Y});
+    writeTreeFile(o.out, skeleton, model.name, fileOptions, &tree.mesh);
     written = std::to_string(tree.mesh.quads.size()) + " quads";
   }
   std::printf("%s, seed %llu: %u iterations (%s), %zu nodes, %zu enabled, %zu of %zu attraction points live, grown in %.1f ms\n",
@@ -166,11 +172,9 @@ void addGrowCommand(CLI::App& app, Action& action) {
   cmd->add_option("--seed", o->seed, "Seed: 1 grows with the file's seed, 2 with the next one, ...")->check(Seed())->capture_default_str();
   cmd->add_option("--out", o->out,
                   "Output file: .json writes the enabled nodes as an arbor-graph/1 branch graph ('arbor mesh', 'render' and 'view' "
-                  "take it); .obj writes the closed quad mesh")
+                  "take it); .obj, .gltf or .glb write the tree as 'generate' does (closed quad mesh, leaf and branch cards, textures)")
       ->required();
-  cmd->add_option("--up", o->up, "The .obj's up axis: y (as Blender and most tools import OBJ) or z (Arbor's own axes)")
-      ->check(CLI::IsMember({"y", "z"}))
-      ->capture_default_str();
+  addExportOptions(cmd, o->exported);
   cmd->callback([o, &action] { action = [o] { return runGrow(*o); }; });
 }
 

@@ -5,6 +5,7 @@
 #include <string_view>
 
 #include "common/input_error.hpp"
+#include "export/obj_export.hpp"
 #include "common/input_file.hpp"
 #include "growth/tree_limits.hpp"
 
@@ -66,6 +67,8 @@ QuadMesh parseObjQuads(const std::string& text, const std::string& file) {
     const LineError fail{file, lineNumber};
     if (const std::size_t hash = line.find('#'); hash != std::string_view::npos) line = line.substr(0, hash);
     const std::string_view keyword = nextWord(line);
+    // Arbor's leaf and branch cards follow the tree's surface; the check is about the surface.
+    if (keyword == "o" && isObjCardObject(nextWord(line))) break;
     if (keyword.empty() || keyword == "vt" || keyword == "vn" || keyword == "o" || keyword == "g" || keyword == "s" ||
         keyword == "usemtl" || keyword == "mtllib")
       continue;

@@ -45,7 +45,7 @@ void ForestScene::exportMesh(const std::string& path) {
   GrowthOptions growth;
   growth.seed = request_.seed;
   const Skeleton skeleton = request_.sources.front().grow(growth);
-  cli::writeMeshFile(path, buildTree(skeleton, BuildOptions{{}, false}).mesh.mesh, request_.labels.front());
+  cli::writeTreeFile(path, skeleton, request_.labels.front(), cli::defaultTreeFileOptions());
   std::printf("wrote %s (%s, seed %llu)\n", path.c_str(), request_.labels.front().c_str(), static_cast<unsigned long long>(request_.seed));
   std::fflush(stdout);
 }

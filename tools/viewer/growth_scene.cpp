@@ -246,7 +246,7 @@ void GrowthScene::save(const std::string& path) {
 
 void GrowthScene::exportMesh(const std::string& path) {
   const Skeleton skeleton = colonizationSkeleton(*colonizer_, model_, seed_, TreeLimits{});
-  cli::writeMeshFile(path, buildTree(skeleton, BuildOptions{{}, false}).mesh.mesh, model_.name);
+  cli::writeTreeFile(path, skeleton, model_.name, cli::defaultTreeFileOptions());
   std::printf("wrote %s (the mesh at age %u)\n", path.c_str(), colonizer_->age());
   std::fflush(stdout);
 }

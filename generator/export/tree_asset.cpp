@@ -1,0 +1,132 @@
+#include "tree_asset.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+#include "subdivide.hpp"
+#include "tree/build_tree.hpp"
+
+namespace arbor {
+
+namespace {
+
+glm::vec3 unitOr(const glm::dvec3& v, const glm::vec3& fallback) {
+  const double length = glm::length(v);
+  return length > 1e-12 && std::isfinite(length) ? glm::vec3(v / length) : fallback;
+}
+
+// Any unit vector at right angles to the unit vector n.
+glm::vec3 perpendicularTo(const glm::vec3& n) {
+  const glm::vec3 axis = std::abs(n.x) < 0.9f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0);
+  return glm::normalize(glm::cross(n, axis));
+}
+
+// Appends one card: corners[k] with texcoords[k], all facing `normal`, tangent along +u. glTF's bitangent
+// (normal x tangent, times w) points up the image, against v; every card's v runs against its length, so w = -1.
+void addCard(CardMesh& cards, const std::array<glm::vec3, 4>& corners, const std::array<glm::vec2, 4>& texcoords,
+             const glm::vec3& normal, const glm::vec3& tangent) {
+  const auto first = static_cast<std::uint32_t>(cards.positions.size());
+  for (int k = 0; k < 4; ++k) {
+    cards.positions.push_back(corners[static_cast<std::size_t>(k)]);
+    cards.texcoords.push_back(texcoords[static_cast<std::size_t>(k)]);
+    cards.normals.push_back(normal);
+    cards.tangents.emplace_back(tangent, -1.0f);
+  }
+  cards.quads.push_back({first, first + 1, first + 2, first + 3});
+}
+
+}  // namespace
+
+CardMesh leafCards(const std::vector<Leaf>& leaves) {
+  CardMesh cards;
+  for (const Leaf& leaf : leaves) {
+    const glm::vec3 along = unitOr(leaf.direction, glm::vec3(0, 0, 1));
+    glm::vec3 normal = unitOr(leaf.normal, perpendicularTo(along));
+    const glm::vec3 across = unitOr(glm::dvec3(glm::cross(normal, along)), perpendicularTo(normal));
+    normal = glm::normalize(glm::cross(along, across));  // exactly at right angles to the card
+    const std::size_t kind = std::min<std::size_t>(leaf.kind, kLeafBladeShare.size() - 1);
+    const float halfWidth = static_cast<float>(leaf.width) / kLeafBladeShare[kind];
+    const float length = static_cast<float>(leaf.length);
+    const glm::vec3 base(leaf.position);
+    // The atlas cell of this kind; the blade's base at the cell's bottom edge, its tip at the top.
+    const glm::vec2 cell = glm::vec2(static_cast<float>(kind % 2), static_cast<float>(kind / 2)) * 0.5f;
+    // Counter-clockwise about the normal ((-across) x along = normal): +across, -across at the base, then the tip.
+    addCard(cards,
+            {base + across * halfWidth, base - across * halfWidth, base + along * length - across * halfWidth,
+             base + along * length + across * halfWidth},
+            {cell + glm::vec2(0.5f, 0.5f), cell + glm::vec2(0.0f, 0.5f), cell, cell + glm::vec2(0.5f, 0.0f)},
+            normal, across);
+  }
+  return cards;
+}
+
+CardMesh branchCards(const std::vector<ImpostorSegment>& segments) {
+  CardMesh cards;
+  for (const ImpostorSegment& s : segments) {
+    const glm::dvec3 a = s.from, b = s.to;
+    const double length = glm::distance(a, b);
+    if (!(length > 0.0)) continue;
+    const glm::dvec3 axis = (b - a) / length;
+    // Two planes through the axis at right angles; the first holds the horizontal, so every stem's cards agree.
+    const glm::vec3 side1 = unitOr(glm::cross(axis, glm::dvec3(0, 0, 1)), perpendicularTo(glm::vec3(axis)));
+    const glm::vec3 side2 = glm::normalize(glm::cross(glm::vec3(axis), side1));
+    const glm::vec3 lo(a - axis * (0.5 * s.fromRadius)), hi(b + axis * (0.5 * s.toRadius));
+    const auto r0 = static_cast<float>(s.fromRadius), r1 = static_cast<float>(s.toRadius);
+    // glTF's v grows down the image; the bark's v grows along the stem, as on the mesh.
+    const auto v0 = static_cast<float>(s.fromV), v1 = static_cast<float>(s.toV);
+    for (const glm::vec3& side : {side1, side2}) {
+      const glm::vec3 normal = glm::normalize(glm::cross(side, glm::vec3(axis)));
+      addCard(cards, {lo - side * r0, lo + side * r0, hi + side * r1, hi - side * r1},
+              {glm::vec2(0.0f, v0), glm::vec2(1.0f, v0), glm::vec2(1.0f, v1), glm::vec2(0.0f, v1)}, normal, side);
+    }
+  }
+  return cards;
+}
+
+TreeAsset makeTreeAsset(const Skeleton& skeleton, const std::string& name, const TreeAssetOptions& options, const QuadMesh* finest,
+                        const std::function<void(const std::string&)>& progress) {
+  TreeAsset asset;
+  asset.name = name;
+  const int levels = std::max(1, skeleton.levels);
+  const int meshed = options.mesh.levels > 0 ? std::min(options.mesh.levels, levels) : levels;
+  for (int lod = 0; lod < std::max(1, options.lods); ++lod) {
+    const int lodLevels = meshed - lod;
+    if (lodLevels < 1) break;  // the trunk stays a mesh: no coarser level of detail than that
+    AssetLod level;
+    level.name = name + "_lod" + std::to_string(lod);
+    level.meshedLevels = lodLevels;
+    if (progress) {
+      progress("level of detail " + std::to_string(lod) + ": meshing stem levels 0-" + std::to_string(lodLevels - 1) +
+               (options.subdivide > 0 ? ", " + std::to_string(options.subdivide) + " Catmull-Clark levels" : std::string()));
+    }
+    QuadMesh coarse;
+    if (lod > 0 || finest == nullptr) {
+      BuildOptions build;
+      build.mesh = options.mesh;
+      build.mesh.levels = lodLevels;
+      build.patches = false;
+      coarse = buildTree(skeleton, build).mesh.mesh;
+    }
+    const QuadMesh& mesh = lod > 0 || finest == nullptr ? coarse : *finest;
+    level.bark = options.subdivide > 0 ? subdivide(mesh, options.subdivide, options.mesh.maxQuads) : mesh;
+    // Stubs are never meshed, so every level of detail has their cards too (wheat's grains).
+    if (options.branchCards) level.branchCards = branchCards(impostorSegments(skeleton, lodLevels));
+    asset.lods.push_back(std::move(level));
+  }
+  if (options.leaves) asset.leaves = leafCards(skeleton.leaves);
+  return asset;
+}
+
+TreeAsset barkOnlyAsset(QuadMesh bark, const std::string& name) {
+  TreeAsset asset;
+  asset.name = name;
+  AssetLod level;
+  level.name = name;
+  level.bark = std::move(bark);
+  asset.lods.push_back(std::move(level));
+  return asset;
+}
+
+}  // namespace arbor

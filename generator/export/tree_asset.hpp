@@ -1,0 +1,86 @@
+#pragma once
+// Everything a complete export holds (issue 18): the bark mesh at each level of detail, the fake-branch cards
+// standing in for the levels each one leaves out, one alpha-masked card per leaf, and the textures. Exporters
+// (glTF, OBJ) write this value; what grew the tree is not known here.
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include "growth/skeleton.hpp"
+#include "mesh/impostor_segments.hpp"
+#include "mesh/mesh_options.hpp"
+#include "mesh/quad_mesh.hpp"
+
+namespace arbor {
+
+// Flat cards (leaves, fake branches) as quads: four corners each, counter-clockwise seen from the normal's side.
+struct CardMesh {
+  std::vector<glm::vec3> positions, normals;
+  std::vector<glm::vec4> tangents;   // unit, along +u; w = -1 (v runs against the card's length)
+  std::vector<glm::vec2> texcoords;  // glTF's convention: (0, 0) is the image's top-left texel
+  std::vector<std::array<std::uint32_t, 4>> quads;
+
+  bool empty() const { return quads.empty(); }
+};
+
+// How much of its atlas cell's width each leaf kind's blade fills (LeafKind order); the cards are widened by
+// its inverse so the blade has the leaf's width. The same numbers as shaders/leaf.geom.
+constexpr std::array<float, 4> kLeafBladeShare{0.82f, 0.30f, 0.95f, 0.70f};
+
+// One card per leaf, as the renderer draws it at full size: from the blade's base to its tip, textured with its
+// kind's cell of the 2 x 2 leaf atlas (engine/image/leaf_atlas.hpp). Double-sided in use.
+CardMesh leafCards(const std::vector<Leaf>& leaves);
+
+// Two crossed cards per fake-branch segment (the renderer's eye-facing rectangle cannot face every eye of a
+// static file): each as wide as the branch, reaching half a radius past both ends as the renderer's do, bark
+// u across, v running on along the stem.
+CardMesh branchCards(const std::vector<ImpostorSegment>& segments);
+
+// One level of detail: the bark mesh of the levels it meshes and cards for the rest.
+struct AssetLod {
+  std::string name;        // "tupelo_lod0"
+  int meshedLevels = 0;    // stem levels in the mesh (the deeper ones are cards)
+  QuadMesh bark;
+  CardMesh branchCards;
+};
+
+// PNG files' bytes; an empty string leaves that map out.
+struct AssetTextures {
+  std::string barkColor;   // sRGB base colour, tiles in u and v
+  std::string barkNormal;  // tangent-space normal map, glTF's convention (green along -v, the image's up)
+  std::string leafAtlas;   // RGBA, alpha-masked at 0.5
+  bool empty() const { return barkColor.empty() && barkNormal.empty() && leafAtlas.empty(); }
+};
+
+struct TreeAsset {
+  std::string name;
+  std::vector<AssetLod> lods;  // lods[0] the most detailed; the others coarser, in order
+  CardMesh leaves;             // shared by every level of detail
+  AssetTextures textures;
+};
+
+struct TreeAssetOptions {
+  MeshOptions mesh;        // for every level of detail; mesh.levels: the most detailed one's (0: all levels)
+  int lods = 1;            // levels of detail: each next one fakes one more stem level (as long as the trunk stays)
+  int subdivide = 0;       // Catmull-Clark levels applied to every bark mesh (OpenSubdiv)
+  bool leaves = true;
+  bool branchCards = true; // cards for the stem levels a level of detail does not mesh (and for stubs)
+};
+
+// The tree built at each level of detail (tree/build_tree), with its leaf and branch cards; textures are the
+// caller's (they live in the engine's assets). `finest`: the finest level's coarse mesh when the caller has
+// built it already (with options.mesh). `progress` hears each level of detail as it is built. Throws what
+// buildTree and subdivide throw.
+TreeAsset makeTreeAsset(const Skeleton& skeleton, const std::string& name, const TreeAssetOptions& options,
+                        const QuadMesh* finest = nullptr, const std::function<void(const std::string&)>& progress = {});
+
+// A bark mesh alone: one level of detail, no cards, no textures (the exporters' simplest input).
+TreeAsset barkOnlyAsset(QuadMesh bark, const std::string& name);
+
+}  // namespace arbor
