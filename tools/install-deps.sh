@@ -9,6 +9,8 @@ packages=(
   libglfw3-dev libglm-dev libosd-dev libstb-dev catch2
   nlohmann-json3-dev libnanoflann-dev libtinyxml2-dev libtinygltf-dev libcli11-dev libimgui-dev
   xvfb xauth xdotool
+  # the Python module (python/) and its tests; Blender runs the add-on's headless test (tools/blender)
+  python3-dev python3-pybind11 python3-numpy python3-pytest blender
 )
 [[ "${1:-}" == "--fuzz" ]] && packages+=(clang-14 libclang-rt-14-dev)
 
