@@ -15,6 +15,7 @@
 #include <utility>
 #include <vector>
 
+#include "common/text_util.hpp"
 #include "export/subdivide.hpp"
 #include "growth/weber_penn/species.hpp"
 #include "tree/build_tree.hpp"
@@ -38,7 +39,10 @@ void requireRange(const char* function, const char* field, int value, int lo, in
 
 Up upAxis(const std::string& path, const std::string& up) {
   if (up != "y" && up != "z") throw InputError(path, "up", "is '" + up + "'; allowed 'y' (as Blender imports OBJ) or 'z' (Arbor's own axes)");
-  if (up != "y" && meshFileType(path, "path") != MeshFileType::Obj) {
+  if (!isSkeletonFile(path) && !isMeshFile(path)) {
+    throw InputError(path, "path", "a tree is written as .obj, .gltf or .glb (the mesh) or .json (the skeleton)");
+  }
+  if (up != "y" && !endsWith(path, ".obj")) {
     throw InputError(path, "up", "applies to .obj only (glTF is y up by its specification)");
   }
   return up == "z" ? Up::Z : Up::Y;
@@ -112,7 +116,7 @@ struct Mesh {
 
   void write(const std::string& path, const std::string& up) const {
     const Up axis = upAxis(path, up);
-    writeFile([&] { writeMeshFile(path, mesh, name, axis); });
+    writeFile([&] { writeMeshFile(path, mesh, name, MeshFileOptions{false, axis}, "path"); });
   }
 };
 
@@ -355,22 +359,38 @@ it, w the flip coordinate); radius (V,) float32; level (V,) uint8; quads (Q, 4) 
            "The tree as one closed quad mesh (arbor.Mesh). levels: mesh only stems of levels below this (0: all, up to "
            "8); subdivide: Catmull-Clark levels by OpenSubdiv (0 to 6, quads times 4 each), positions on the limit "
            "surface.")
-      .def("export", [](const Tree& t, const py::object& pathObject, int levels, int subdivisions, const std::string& up) {
+      .def("export", [](const Tree& t, const py::object& pathObject, int levels, int subdivisions, const std::string& up, bool leaves,
+                        bool cards, bool textures, int lods) {
             const std::string path = pathArgument(pathObject, "Tree.export");
             if (isSkeletonFile(path)) {
-              if (levels != 0 || subdivisions != 0 || up != "y") {
-                throw InputError(path, "path", "levels, subdivide and up apply to meshes (.obj, .gltf, .glb), not to a skeleton (.json)");
+              if (levels != 0 || subdivisions != 0 || up != "y" || lods != 1) {
+                throw InputError(path, "path", "levels, subdivide, up and lods apply to meshes (.obj, .gltf, .glb), not to a skeleton (.json)");
               }
               writeFile([&] { writeSkeletonFile(path, t.skeleton); });
               return;
             }
-            upAxis(path, up);  // refused before any meshing
-            t.mesh(levels, subdivisions).write(path, up);
+            const Up axis = upAxis(path, up);  // refused before any meshing
+            requireRange("Tree.export", "levels", levels, 0, kMaxLevels, "all levels");
+            requireRange("Tree.export", "subdivide", subdivisions, 0, kMaxSubdivide, "the control mesh");
+            requireRange("Tree.export", "lods", lods, 1, kMaxLevels, "the finest only");
+            if (lods > 1 && endsWith(path, ".obj")) throw InputError(path, "lods", "an OBJ holds one level of detail; levels of detail need .gltf or .glb");
+            TreeFileOptions options = defaultTreeFileOptions();
+            options.file = MeshFileOptions{false, axis};
+            options.asset.mesh.levels = levels;
+            options.asset.subdivide = subdivisions;
+            options.asset.lods = lods;
+            options.asset.leaves = leaves;
+            options.asset.branchCards = cards;
+            options.textures = textures;
+            writeFile([&] { writeTreeFile(path, t.skeleton, t.name, options, nullptr, {}, "path"); });
           },
-          py::arg("path"), py::arg("levels") = 0, py::arg("subdivide") = 0, py::arg("up") = "y",
-          "Writes the tree as the file `path` names: .obj (quads; `up` 'y' as Blender imports OBJ, or 'z'), .gltf or "
-          ".glb (triangles, y up, bark material), meshed as mesh(levels, subdivide); or .json, the skeleton "
-          "(arbor-skeleton/1, which grow() reads back as the same tree). Written whole or not at all.")
+          py::arg("path"), py::arg("levels") = 0, py::arg("subdivide") = 0, py::arg("up") = "y", py::kw_only(), py::arg("leaves") = true,
+          py::arg("cards") = true, py::arg("textures") = true, py::arg("lods") = 1,
+          "Writes the tree as the file `path` names, as `arbor generate` does (docs/export.md): .obj (quads; `up` 'y' as "
+          "Blender imports OBJ, or 'z'; a .mtl and PNG textures beside it), .gltf or .glb (triangles, y up, textures "
+          "inside, `lods` levels of detail by MSFT_lod); the bark meshed as mesh(levels, subdivide), with leaf cards "
+          "(`leaves`), fake-branch cards for stem levels not meshed (`cards`) and textures (`textures`); or .json, the "
+          "skeleton (arbor-skeleton/1, which grow() reads back as the same tree). Written whole or not at all.")
       .def("__repr__", [](const Tree& t) {
         return "<arbor.Tree '" + t.name + "' seed " + std::to_string(t.skeleton.seed) + ", " + std::to_string(t.skeleton.levels) + " levels, " +
                std::to_string(t.skeleton.nodes.size()) + " nodes, " + std::to_string(t.skeleton.leaves.size()) + " leaves>";

@@ -128,7 +128,16 @@ def test_leaves(small_tree):
 def test_export_obj(small_tree, tmp_path):
     mesh = small_tree.mesh()
     path = tmp_path / "tree.obj"
+    # The whole tree as generate writes it: the bark, then one card per leaf, with its .mtl and textures.
     small_tree.export(str(path))
+    lines = path.read_text().splitlines()
+    assert "mtllib tree.mtl" in lines and "o leaves" in lines
+    faces = [line for line in lines if line.startswith("f ")]
+    assert len(faces) == mesh.quad_count + len(small_tree.leaves["position"])
+    for name in ("tree.mtl", "tree_bark_color.png", "tree_bark_normal.png", "tree_leaf_atlas.png"):
+        assert (tmp_path / name).stat().st_size > 100, name
+    # The bark alone.
+    small_tree.export(str(path), leaves=False, cards=False, textures=False)
     lines = path.read_text().splitlines()
     faces = [line for line in lines if line.startswith("f ")]
     assert len(faces) == mesh.quad_count
@@ -137,7 +146,7 @@ def test_export_obj(small_tree, tmp_path):
     # Y up by default (as Blender imports OBJ); z keeps Arbor's axes.
     v = np.array([line.split()[1:4] for line in lines if line.startswith("v ")], dtype=np.float64)
     assert np.allclose(v[:, 1], mesh.positions[:, 2], atol=1e-5)
-    small_tree.export(str(path), up="z")
+    small_tree.export(str(path), up="z", leaves=False, cards=False, textures=False)
     v = np.array([line.split()[1:4] for line in path.read_text().splitlines() if line.startswith("v ")], dtype=np.float64)
     assert np.allclose(v, mesh.positions, atol=1e-5)
 
@@ -154,9 +163,15 @@ def test_export_glb_and_gltf(small_tree, tmp_path):
     mesh = small_tree.mesh()
     indices = document["accessors"][document["meshes"][0]["primitives"][0]["indices"]]
     assert indices["count"] == 6 * mesh.quad_count
+    assert {m["name"] for m in document["materials"]} == {"bark", "leaves"}
+    assert len(document["images"]) == 3
     gltf = tmp_path / "tree.gltf"
-    small_tree.export(str(gltf), subdivide=1)
-    assert json.loads(gltf.read_text())["asset"]["version"] == "2.0"
+    small_tree.export(str(gltf), subdivide=1, lods=2)
+    document = json.loads(gltf.read_text())
+    assert document["asset"]["version"] == "2.0"
+    assert document["nodes"][0]["extensions"]["MSFT_lod"]["ids"] == [1]
+    with pytest.raises(arbor.InputError, match="lods"):
+        small_tree.export(str(tmp_path / "x.obj"), lods=2)
     assert not list(tmp_path.glob("*.partial-*"))
 
 

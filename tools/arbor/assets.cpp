@@ -1,10 +1,6 @@
 #include "assets.hpp"
 
-#include <algorithm>
-#include <cstdlib>
 #include <filesystem>
-#include <utility>
-#include <unistd.h>
 
 #include "common/input_error.hpp"
 #include "common/input_file.hpp"
@@ -13,49 +9,6 @@
 namespace arbor::cli {
 
 namespace fs = std::filesystem;
-
-std::string assetDirectory() {
-  // $ARBOR_ASSETS first; then beside the binary (installed: PREFIX/share/arbor; a copied tree: assets/); then
-  // the source tree the binary was built from. None with presets: an error, never an empty preset list.
-  if (const char* env = std::getenv("ARBOR_ASSETS"); env && *env) {
-    if (!fs::is_directory(fs::path(env) / "presets")) throw InputError(env, "ARBOR_ASSETS", "has no presets/ folder; point it at Arbor's assets");
-    return env;
-  }
-  std::vector<fs::path> candidates;
-  std::error_code ec;
-  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-  if (!ec) {
-    candidates = {exe.parent_path().parent_path() / "share" / "arbor", exe.parent_path() / "assets", exe.parent_path().parent_path() / "assets"};
-  }
-  candidates.emplace_back(ARBOR_ASSET_DIR);
-  std::string looked;
-  for (const fs::path& candidate : candidates) {
-    if (fs::is_directory(candidate / "presets", ec)) return candidate.string();
-    looked += (looked.empty() ? "" : ", ") + candidate.string();
-  }
-  throw InputError("assets", "ARBOR_ASSETS", "no assets folder with presets found (looked in " + looked + "); install Arbor or set ARBOR_ASSETS");
-}
-
-namespace {
-
-// Where presets live: species and other model files, then L-system grammars.
-constexpr std::pair<const char*, const char*> kPresetFolders[] = {{"presets", ".json"}, {"lsystems", ".lsys"}};
-
-}  // namespace
-
-std::vector<std::string> presetNames() {
-  std::vector<std::string> names;
-  for (const auto& [folder, extension] : kPresetFolders) {
-    std::vector<std::string> here;
-    std::error_code ec;
-    for (const auto& entry : fs::directory_iterator(fs::path(assetDirectory()) / folder, ec)) {
-      if (entry.path().extension() == extension) here.push_back(entry.path().stem().string());
-    }
-    std::sort(here.begin(), here.end());
-    names.insert(names.end(), here.begin(), here.end());
-  }
-  return names;
-}
 
 void addAnglesOption(CLI::App* cmd, AngleChoice& angles) {
   cmd->add_option_function<std::string>(
@@ -70,17 +23,6 @@ void addAnglesOption(CLI::App* cmd, AngleChoice& angles) {
 }
 
 namespace {
-
-// A preset's file, or "" when the argument names none.
-std::string presetFile(const std::string& name) {
-  if (name.find('/') != std::string::npos) return "";
-  for (const auto& [folder, extension] : kPresetFolders) {
-    const fs::path preset = fs::path(assetDirectory()) / folder / (name + extension);
-    std::error_code ec;
-    if (fs::is_regular_file(preset, ec)) return preset.string();
-  }
-  return "";
-}
 
 [[noreturn]] void neitherFileNorPreset(const std::string& argument, const std::string& files) {
   // A path (a folder or an extension in it) is a file the user meant, not a preset name mistyped.

@@ -1,19 +1,17 @@
 #pragma once
-// Where presets and other assets live: $ARBOR_ASSETS, the source tree's assets/, or ../assets beside the binary.
+// Presets and files named on the command line; where the assets are is files/asset_folder.hpp.
 #include <CLI/CLI.hpp>
 #include <string>
 #include <vector>
 
+#include "files/asset_folder.hpp"
 #include "growth/growth_model.hpp"
 #include "tree/tree_source.hpp"
 
 namespace arbor::cli {
 
-std::string assetDirectory();
-
-// Preset names: model files in assets/presets/*.json ("black-tupelo", ...), then L-system grammars in
-// assets/lsystems/*.lsys ("fig-1-24a", ...), each group sorted.
-std::vector<std::string> presetNames();
+using arbor::assetDirectory;
+using arbor::presetNames;
 
 // Which angles a loaded species follows: the file's own (an Arbaro XML file's DownAngle and SplitAngle, a JSON
 // file's AngleRule) or Murray's natural angles whatever the file says.

@@ -15,7 +15,7 @@
 #include "mesh/mesh_checks.hpp"
 #include "mesh/tree_mesh.hpp"
 #include "tree/build_tree.hpp"
-#include "tree_file.hpp"
+#include "export_options.hpp"
 #include "patches/patch_set.hpp"
 
 namespace arbor::cli {

@@ -10,7 +10,7 @@
 #include "assets.hpp"
 #include "cli_values.hpp"
 #include "commands.hpp"
-#include "tree_file.hpp"
+#include "export_options.hpp"
 #include "common/atomic_file.hpp"
 #include "common/text_util.hpp"
 #include "export/obj_export.hpp"

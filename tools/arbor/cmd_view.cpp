@@ -16,7 +16,7 @@
 #include "growth_scene.hpp"
 #include "common/text_util.hpp"
 #include "render_options.hpp"
-#include "tree_file.hpp"
+#include "files/tree_file.hpp"
 #include "view_script.hpp"
 #include "viewer.hpp"
 #include "window/window.hpp"

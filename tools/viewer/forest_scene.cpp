@@ -7,7 +7,7 @@
 #include "common/atomic_file.hpp"
 #include "common/input_error.hpp"
 #include "tree/build_tree.hpp"
-#include "tree_file.hpp"
+#include "files/tree_file.hpp"
 #include "view_panel.hpp"
 
 namespace arbor::viewer {
@@ -45,7 +45,7 @@ void ForestScene::exportMesh(const std::string& path) {
   GrowthOptions growth;
   growth.seed = request_.seed;
   const Skeleton skeleton = request_.sources.front().grow(growth);
-  cli::writeTreeFile(path, skeleton, request_.labels.front(), cli::defaultTreeFileOptions());
+  writeTreeFile(path, skeleton, request_.labels.front(), defaultTreeFileOptions());
   std::printf("wrote %s (%s, seed %llu)\n", path.c_str(), request_.labels.front().c_str(), static_cast<unsigned long long>(request_.seed));
   std::fflush(stdout);
 }

@@ -10,7 +10,7 @@
 #include "assets.hpp"
 #include "common/atomic_file.hpp"
 #include "tree/build_tree.hpp"
-#include "tree_file.hpp"
+#include "files/tree_file.hpp"
 #include "view_panel.hpp"
 #include "common/input_error.hpp"
 #include "growth/graph/branch_graph.hpp"
@@ -246,7 +246,7 @@ void GrowthScene::save(const std::string& path) {
 
 void GrowthScene::exportMesh(const std::string& path) {
   const Skeleton skeleton = colonizationSkeleton(*colonizer_, model_, seed_, TreeLimits{});
-  cli::writeTreeFile(path, skeleton, model_.name, cli::defaultTreeFileOptions());
+  writeTreeFile(path, skeleton, model_.name, defaultTreeFileOptions());
   std::printf("wrote %s (the mesh at age %u)\n", path.c_str(), colonizer_->age());
   std::fflush(stdout);
 }

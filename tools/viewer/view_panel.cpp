@@ -9,7 +9,7 @@
 #include "cli_values.hpp"
 #include "common/input_error.hpp"
 #include "common/text_util.hpp"
-#include "tree_file.hpp"
+#include "files/tree_file.hpp"
 
 namespace arbor::viewer {
 
@@ -61,7 +61,7 @@ void fileButtons(std::string& path, std::string& status, const std::function<voi
     try {
       cli::requireOutputFile(path, "file");
       if (model && !endsWith(path, ".json")) throw InputError(path, "file", "a model is saved as .json");
-      if (!model && !cli::isMeshFile(path)) throw InputError(path, "file", "a mesh is exported as .obj, .gltf or .glb");
+      if (!model && !isMeshFile(path)) throw InputError(path, "file", "a mesh is exported as .obj, .gltf or .glb");
       (model ? save : exportMesh)(path);
       status = "wrote " + path;
     } catch (const std::exception& e) {

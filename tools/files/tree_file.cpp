@@ -5,8 +5,7 @@
 #include <iterator>
 #include <stdexcept>
 
-#include "assets.hpp"
-#include "cli_values.hpp"
+#include "asset_folder.hpp"
 #include "common/atomic_file.hpp"
 #include "common/input_error.hpp"
 #include "common/text_util.hpp"
@@ -15,7 +14,7 @@
 #include "image/bark_texture.hpp"
 #include "image/png_io.hpp"
 
-namespace arbor::cli {
+namespace arbor {
 
 namespace {
 
@@ -37,44 +36,17 @@ void requireMeshFile(const std::string& path, const std::string& field) {
 
 bool isMeshFile(const std::string& path) { return endsWith(path, ".obj") || endsWith(path, ".gltf") || endsWith(path, ".glb"); }
 
+void writeMeshFile(const std::string& path, const QuadMesh& mesh, const std::string& name, const MeshFileOptions& options,
+                   const std::string& field) {
+  requireMeshFile(path, field);
+  if (endsWith(path, ".obj")) writeFileAtomically(path, [&](std::ostream& out) { writeObj(mesh, options.triangles, out, options.up); });
+  else if (endsWith(path, ".gltf")) writeFileAtomically(path, writeGltf(mesh, name));
+  else writeFileAtomically(path, writeGlb(mesh, name));
+}
+
 TreeFileOptions defaultTreeFileOptions() {
   TreeFileOptions options;
   options.asset.lods = 1;  // Blender imports every node of a glTF, coarser levels of detail on top of the finest
-  return options;
-}
-
-void addExportOptions(CLI::App* cmd, ExportChoices& c) {
-  cmd->add_option("--lods", c.lods,
-                  "Levels of detail in a .gltf/.glb: the finest node names the coarser ones by MSFT_lod, each fakes one more stem "
-                  "level as branch cards (engines pick one; Blender imports them all, one over another); an OBJ holds one")
-      ->check(Whole(1, 8));
-  cmd->add_flag("--no-leaves", c.noLeaves, "Leave the leaf cards out of a mesh file");
-  cmd->add_flag("--no-cards", c.noCards, "Leave out the fake-branch cards (the stem levels not meshed, and stubs)");
-  cmd->add_flag("--no-textures", c.noTextures,
-                "No textures: glTF materials get flat colours; OBJ gets no .mtl and no PNG files beside it");
-  cmd->add_flag("--triangles", c.triangles, "Write triangles instead of quads to .obj");
-  cmd->add_option("--up", c.up, "The .obj's up axis: y (as Blender and most tools import OBJ) or z (Arbor's own axes)")
-      ->check(CLI::IsMember({"y", "z"}))
-      ->capture_default_str();
-}
-
-TreeFileOptions treeFileOptions(const std::string& path, const ExportChoices& c, const MeshOptions& mesh, int subdivide) {
-  TreeFileOptions options = defaultTreeFileOptions();
-  const bool obj = endsWith(path, ".obj");
-  if (c.up != "y" && !obj) {
-    throw InputError(path, "--up", "applies to .obj only (glTF is y up by its specification; the skeleton keeps Arbor's z up)");
-  }
-  if (c.triangles && !obj) {
-    throw InputError(path, "--triangles", "applies to .obj only (glTF and GLB always hold triangles; a skeleton none)");
-  }
-  if (c.lods > 1 && obj) throw InputError(path, "--lods", "an OBJ holds one level of detail; levels of detail need .gltf or .glb");
-  options.file = MeshFileOptions{c.triangles, c.up == "z" ? Up::Z : Up::Y};
-  if (c.lods > 0) options.asset.lods = c.lods;
-  options.asset.leaves = !c.noLeaves;
-  options.asset.branchCards = !c.noCards;
-  options.asset.mesh = mesh;
-  options.asset.subdivide = subdivide;
-  options.textures = !c.noTextures;
   return options;
 }
 
@@ -126,4 +98,4 @@ void writeTreeFile(const std::string& path, const Skeleton& skeleton, const std:
   });
 }
 
-}  // namespace arbor::cli
+}  // namespace arbor

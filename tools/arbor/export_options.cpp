@@ -1,0 +1,44 @@
+#include "export_options.hpp"
+
+#include "cli_values.hpp"
+#include "common/input_error.hpp"
+#include "common/text_util.hpp"
+
+namespace arbor::cli {
+
+void addExportOptions(CLI::App* cmd, ExportChoices& c) {
+  cmd->add_option("--lods", c.lods,
+                  "Levels of detail in a .gltf/.glb: the finest node names the coarser ones by MSFT_lod, each fakes one more stem "
+                  "level as branch cards (engines pick one; Blender imports them all, one over another); an OBJ holds one")
+      ->check(Whole(1, 8));
+  cmd->add_flag("--no-leaves", c.noLeaves, "Leave the leaf cards out of a mesh file");
+  cmd->add_flag("--no-cards", c.noCards, "Leave out the fake-branch cards (the stem levels not meshed, and stubs)");
+  cmd->add_flag("--no-textures", c.noTextures,
+                "No textures: glTF materials get flat colours; OBJ gets no .mtl and no PNG files beside it");
+  cmd->add_flag("--triangles", c.triangles, "Write triangles instead of quads to .obj");
+  cmd->add_option("--up", c.up, "The .obj's up axis: y (as Blender and most tools import OBJ) or z (Arbor's own axes)")
+      ->check(CLI::IsMember({"y", "z"}))
+      ->capture_default_str();
+}
+
+TreeFileOptions treeFileOptions(const std::string& path, const ExportChoices& c, const MeshOptions& mesh, int subdivide) {
+  TreeFileOptions options = defaultTreeFileOptions();
+  const bool obj = endsWith(path, ".obj");
+  if (c.up != "y" && !obj) {
+    throw InputError(path, "--up", "applies to .obj only (glTF is y up by its specification; the skeleton keeps Arbor's z up)");
+  }
+  if (c.triangles && !obj) {
+    throw InputError(path, "--triangles", "applies to .obj only (glTF and GLB always hold triangles; a skeleton none)");
+  }
+  if (c.lods > 1 && obj) throw InputError(path, "--lods", "an OBJ holds one level of detail; levels of detail need .gltf or .glb");
+  options.file = MeshFileOptions{c.triangles, c.up == "z" ? Up::Z : Up::Y};
+  if (c.lods > 0) options.asset.lods = c.lods;
+  options.asset.leaves = !c.noLeaves;
+  options.asset.branchCards = !c.noCards;
+  options.asset.mesh = mesh;
+  options.asset.subdivide = subdivide;
+  options.textures = !c.noTextures;
+  return options;
+}
+
+}  // namespace arbor::cli
