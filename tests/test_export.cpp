@@ -697,3 +697,47 @@ TEST_CASE("OBJ of an asset: cards as objects after the surface, read back as the
   CHECK_THAT(mtl, Contains("newmtl bark") && Contains("map_Kd c.png") && Contains("map_Bump -bm 1 n.png") &&
                       Contains("newmtl leaves") && Contains("map_d a.png"));
 }
+
+TEST_CASE("wind animation: every part has one morph target per keyframe, one looping channel per level of detail, validator clean", "[export][gltf][validator][wind]") {
+  const Skeleton skeleton = growPreset("quaking-aspen", 3);
+  TreeAssetOptions options;
+  options.lods = 2;
+  options.wind.strength = 1.0;
+  options.windFrames = 6;
+  const TreeAsset asset = makeTreeAsset(skeleton, "aspen", options);
+  REQUIRE(asset.windPeriod == Approx(4.0));
+  const Glb glb = splitGlb(writeGlb(asset));
+  const auto& doc = glb.json;
+  for (const auto& mesh : doc["meshes"]) {
+    CHECK(mesh["weights"].size() == 6);
+    for (const auto& primitive : mesh["primitives"]) CHECK(primitive["targets"].size() == 6);
+  }
+  // The bark's first pose equals the wind function at time 0 on the cage (no subdivision here).
+  const TreeMesh cage = buildTree(skeleton, BuildOptions{{}, false}).mesh;
+  const auto points = meshWindPoints(skeleton, cage);
+  const auto pose = accessorFloats(doc, glb.binary, doc["meshes"][0]["primitives"][0]["targets"][0]["POSITION"], 3);
+  double worst = 0.0, largest = 0.0;
+  for (std::size_t v = 0; v < cage.mesh.vertexCount(); ++v) {
+    const glm::vec3 d = windOffset(cage.mesh.positions[v], points[v], options.wind, windHeight(skeleton), 0.0);
+    const glm::vec3 stored(pose[3 * v], -pose[3 * v + 2], pose[3 * v + 1]);  // glTF's y up back to z up
+    worst = std::max(worst, static_cast<double>(glm::distance(d, stored)));
+    largest = std::max(largest, static_cast<double>(glm::length(d)));
+  }
+  CHECK(worst < 1e-6);
+  CHECK(largest > 0.05);
+  const auto& animation = doc["animations"][0];
+  CHECK(animation["channels"].size() == 2);
+  CHECK(animation["samplers"][0]["interpolation"] == "LINEAR");
+  const auto times = accessorFloats(doc, glb.binary, animation["samplers"][0]["input"], 1);
+  const auto weights = accessorFloats(doc, glb.binary, animation["samplers"][0]["output"], 1);
+  REQUIRE(times.size() == 7);
+  CHECK(times.back() == Approx(4.0));
+  REQUIRE(weights.size() == 7 * 6);
+  for (std::size_t k = 0; k < 7; ++k)
+    for (std::size_t j = 0; j < 6; ++j) CHECK(weights[6 * k + j] == (j == k % 6 ? 1.0f : 0.0f));  // the loop ends on pose 0
+
+  const Run r = validate(writeTemp("aspen-wind.glb", writeGlb(asset)));
+  INFO(r.output);
+  CHECK(r.exitCode == 0);
+  CHECK_THAT(r.output, Contains(": 0 errors, 0 warnings"));
+}

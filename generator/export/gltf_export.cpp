@@ -90,7 +90,8 @@ struct BufferAssembly {
   int append(const std::vector<T>& values, std::size_t count, const char* type, int componentType, int target) {
     static_assert(sizeof(T) == 4, "every component is 4 bytes, which keeps each view 4-byte aligned");
     const std::size_t bytes = values.size() * sizeof(T);
-    bufferViews.push_back({{"buffer", 0}, {"byteOffset", binary.size()}, {"byteLength", bytes}, {"target", target}});
+    bufferViews.push_back({{"buffer", 0}, {"byteOffset", binary.size()}, {"byteLength", bytes}});
+    if (target != 0) bufferViews.back()["target"] = target;  // animation data is no vertex or index buffer
     binary.append(reinterpret_cast<const char*>(values.data()), bytes);
     accessors.push_back({{"bufferView", bufferViews.size() - 1},
                          {"componentType", componentType},
@@ -171,6 +172,29 @@ void setBounds(Json& accessor, const Bounds& b) {
   accessor["max"] = {static_cast<double>(b.hi.x), static_cast<double>(b.hi.y), static_cast<double>(b.hi.z)};
 }
 
+using Poses = std::vector<std::vector<glm::vec3>>;
+
+// Morph targets: one POSITION accessor of offsets (glTF's axes) per pose; each target needs its bounds.
+Json morphTargets(const Poses& poses, std::size_t vertices, BufferAssembly& buffer) {
+  Json targets = Json::array();
+  for (const auto& pose : poses) {
+    if (pose.size() != vertices) throw std::invalid_argument("glTF export: a wind pose has another number of vertices than its primitive");
+    std::vector<float> offsets;
+    offsets.reserve(3 * vertices);
+    Bounds bounds;
+    for (const glm::vec3& d : pose) {
+      if (!isFinite(d)) throw std::invalid_argument("glTF export: a wind pose is not finite");
+      const glm::vec3 q = yUp(d);
+      bounds.add(q);
+      appendFloats(offsets, q);
+    }
+    if (vertices == 0) bounds = Bounds{glm::vec3(0), glm::vec3(0)};
+    targets.push_back({{"POSITION", buffer.append(offsets, vertices, "VEC3", kFloat, kArrayBuffer)}});
+    setBounds(buffer.accessors.back(), bounds);
+  }
+  return targets;
+}
+
 std::vector<std::uint32_t> flatten(const std::vector<std::array<std::uint32_t, 3>>& triangles) {
   std::vector<std::uint32_t> indices;
   indices.reserve(3 * triangles.size());
@@ -179,7 +203,7 @@ std::vector<std::uint32_t> flatten(const std::vector<std::array<std::uint32_t, 3
 }
 
 // The bark mesh's primitive attributes: POSITION, NORMAL, TANGENT, TEXCOORD_0 and Arbor's _RADIUS, _LEVEL, _FLIP.
-Json barkPrimitive(const QuadMesh& mesh, BufferAssembly& buffer, int material) {
+Json barkPrimitive(const QuadMesh& mesh, BufferAssembly& buffer, int material, const Poses& poses) {
   const char* context = "glTF export";
   exporting::requirePerVertex(mesh, mesh.normals.size(), "normals", context);
   exporting::requirePerVertex(mesh, mesh.tangents.size(), "tangents", context);
@@ -230,12 +254,14 @@ Json barkPrimitive(const QuadMesh& mesh, BufferAssembly& buffer, int material) {
   attributes["_FLIP"] = buffer.append(flip, n, "SCALAR", kFloat, kArrayBuffer);
   const auto indices = flatten(triangulate(mesh));
   const int indexAccessor = buffer.append(indices, indices.size(), "SCALAR", kUnsignedInt, kElementArrayBuffer);
-  return {{"attributes", attributes}, {"indices", indexAccessor}, {"material", material}, {"mode", kTriangles}};
+  Json primitive = {{"attributes", attributes}, {"indices", indexAccessor}, {"material", material}, {"mode", kTriangles}};
+  if (!poses.empty()) primitive["targets"] = morphTargets(poses, n, buffer);
+  return primitive;
 }
 
 // Cards (leaves, fake branches): each quad as two triangles; the cards' frames are exact already.
 // Tangents only where the material has a normal map (the validator notes unused ones).
-Json cardPrimitive(const CardMesh& cards, BufferAssembly& buffer, int material, bool tangents) {
+Json cardPrimitive(const CardMesh& cards, BufferAssembly& buffer, int material, bool tangents, const Poses& poses) {
   const std::size_t n = cards.positions.size();
   if (cards.normals.size() != n || cards.tangents.size() != n || cards.texcoords.size() != n) {
     throw std::invalid_argument("glTF export: a card mesh needs one normal, tangent and texture coordinate per corner");
@@ -267,7 +293,9 @@ Json cardPrimitive(const CardMesh& cards, BufferAssembly& buffer, int material, 
   if (tangents) attributes["TANGENT"] = buffer.append(frames, n, "VEC4", kFloat, kArrayBuffer);
   attributes["TEXCOORD_0"] = buffer.append(texcoords, n, "VEC2", kFloat, kArrayBuffer);
   const int indexAccessor = buffer.append(indices, indices.size(), "SCALAR", kUnsignedInt, kElementArrayBuffer);
-  return {{"attributes", attributes}, {"indices", indexAccessor}, {"material", material}, {"mode", kTriangles}};
+  Json primitive = {{"attributes", attributes}, {"indices", indexAccessor}, {"material", material}, {"mode", kTriangles}};
+  if (!poses.empty()) primitive["targets"] = morphTargets(poses, n, buffer);
+  return primitive;
 }
 
 // Materials, textures, images and samplers, each added only when something uses it.
@@ -339,12 +367,22 @@ Asset buildAsset(const TreeAsset& tree) {
   MaterialSet materials{tree.textures, buffer};
   Json meshes = Json::array(), nodes = Json::array();
   std::optional<Json> leafPrimitive;
-  if (!tree.leaves.empty()) leafPrimitive = cardPrimitive(tree.leaves, buffer, materials.leafMaterial(), false);
+  const bool wind = tree.windPeriod > 0.0;
+  const std::size_t poseCount = wind ? tree.lods.front().barkPoses.size() : 0;
+  // Every primitive of a mesh needs the same targets: where a part has no poses, it gets none.
+  auto posesOf = [&](const Poses& poses) -> const Poses& {
+    if (wind && poses.size() != poseCount) throw std::invalid_argument("glTF export: every part needs the same number of wind poses");
+    return poses;
+  };
+  if (!tree.leaves.empty()) leafPrimitive = cardPrimitive(tree.leaves, buffer, materials.leafMaterial(), false, posesOf(tree.leafPoses));
   for (const AssetLod& lod : tree.lods) {
-    Json primitives = Json::array({barkPrimitive(lod.bark, buffer, materials.barkMaterial(false))});
-    if (!lod.branchCards.empty()) primitives.push_back(cardPrimitive(lod.branchCards, buffer, materials.barkMaterial(true), !tree.textures.barkNormal.empty()));
+    Json primitives = Json::array({barkPrimitive(lod.bark, buffer, materials.barkMaterial(false), posesOf(lod.barkPoses))});
+    if (!lod.branchCards.empty())
+      primitives.push_back(cardPrimitive(lod.branchCards, buffer, materials.barkMaterial(true), !tree.textures.barkNormal.empty(), posesOf(lod.branchCardPoses)));
     if (leafPrimitive) primitives.push_back(*leafPrimitive);  // the same accessors in every level of detail
-    meshes.push_back({{"name", lod.name}, {"primitives", std::move(primitives)}});
+    Json mesh = {{"name", lod.name}, {"primitives", std::move(primitives)}};
+    if (wind) mesh["weights"] = std::vector<double>(poseCount, 0.0);
+    meshes.push_back(std::move(mesh));
     nodes.push_back({{"name", lod.name}, {"mesh", meshes.size() - 1}});
   }
   nodes[0]["name"] = tree.name;
@@ -358,6 +396,23 @@ Asset buildAsset(const TreeAsset& tree) {
     nodes[0]["extensions"] = {{"MSFT_lod", {{"ids", ids}}}};
     nodes[0]["extras"] = {{"MSFT_screencoverage", coverage}};
     doc["extensionsUsed"] = Json::array({"MSFT_lod"});
+  }
+  if (wind && poseCount > 0) {
+    // One loop over the poses: at keyframe k pose k alone, blended linearly to the next, the last back to the first.
+    std::vector<float> times, weights;
+    for (std::size_t k = 0; k <= poseCount; ++k) {
+      times.push_back(static_cast<float>(tree.windPeriod * static_cast<double>(k) / static_cast<double>(poseCount)));
+      for (std::size_t j = 0; j < poseCount; ++j) weights.push_back(j == k % poseCount ? 1.0f : 0.0f);
+    }
+    const int input = buffer.append(times, times.size(), "SCALAR", kFloat, 0);
+    buffer.accessors.back()["min"] = {static_cast<double>(times.front())};
+    buffer.accessors.back()["max"] = {static_cast<double>(times.back())};
+    const int output = buffer.append(weights, weights.size(), "SCALAR", kFloat, 0);
+    Json channels = Json::array();
+    for (std::size_t i = 0; i < tree.lods.size(); ++i) channels.push_back({{"sampler", 0}, {"target", {{"node", i}, {"path", "weights"}}}});
+    doc["animations"] = Json::array({{{"name", "wind"},
+                                      {"samplers", Json::array({{{"input", input}, {"output", output}, {"interpolation", "LINEAR"}}})},
+                                      {"channels", std::move(channels)}}});
   }
   doc["scene"] = 0;
   doc["scenes"] = Json::array({{{"name", tree.name}, {"nodes", Json::array({0})}}});

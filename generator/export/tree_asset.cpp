@@ -62,12 +62,19 @@ CardMesh leafCards(const std::vector<Leaf>& leaves) {
   return cards;
 }
 
+namespace {
+
+// Segments too short to have a direction get no cards.
+bool hasCards(const ImpostorSegment& s) { return glm::distance(s.from, s.to) > 0.0; }
+
+}  // namespace
+
 CardMesh branchCards(const std::vector<ImpostorSegment>& segments) {
   CardMesh cards;
   for (const ImpostorSegment& s : segments) {
+    if (!hasCards(s)) continue;
     const glm::dvec3 a = s.from, b = s.to;
     const double length = glm::distance(a, b);
-    if (!(length > 0.0)) continue;
     const glm::dvec3 axis = (b - a) / length;
     // Two planes through the axis at right angles; the first holds the horizontal, so every stem's cards agree.
     const glm::vec3 side1 = unitOr(glm::cross(axis, glm::dvec3(0, 0, 1)), perpendicularTo(glm::vec3(axis)));
@@ -85,7 +92,66 @@ CardMesh branchCards(const std::vector<ImpostorSegment>& segments) {
   return cards;
 }
 
-TreeAsset makeTreeAsset(const Skeleton& skeleton, const std::string& name, const TreeAssetOptions& options, const QuadMesh* finest,
+namespace {
+
+// The keyframes' times: evenly over one period, the last one short of it (the loop returns to the first).
+double keyframeTime(const TreeAssetOptions& options, int frame) { return options.wind.period() * frame / options.windFrames; }
+
+// Each keyframe's offsets of the bark's vertices: the cage posed, then subdivided as the rest was.
+std::vector<std::vector<glm::vec3>> barkPoses(const Skeleton& skeleton, const TreeMesh& cage, const QuadMesh& bark,
+                                              const TreeAssetOptions& options, double height) {
+  const std::vector<WindPoint> points = meshWindPoints(skeleton, cage);
+  std::vector<std::vector<glm::vec3>> poses;
+  for (int frame = 0; frame < options.windFrames; ++frame) {
+    const double t = keyframeTime(options, frame);
+    QuadMesh posed = cage.mesh;
+    for (std::size_t v = 0; v < posed.vertexCount(); ++v) posed.positions[v] += windOffset(cage.mesh.positions[v], points[v], options.wind, height, t);
+    if (options.subdivide > 0) posed = subdivide(posed, options.subdivide, options.mesh.maxQuads);
+    std::vector<glm::vec3> offsets(bark.vertexCount());
+    for (std::size_t v = 0; v < offsets.size(); ++v) offsets[v] = posed.positions[v] - bark.positions[v];
+    poses.push_back(std::move(offsets));
+  }
+  return poses;
+}
+
+// Branch cards move with the nodes at their ends (the layout of branchCards: two cards, eight corners, per segment).
+std::vector<std::vector<glm::vec3>> branchCardPoses(const Skeleton& skeleton, const std::vector<ImpostorSegment>& segments,
+                                                    const TreeAssetOptions& options, double height) {
+  std::vector<std::vector<glm::vec3>> poses;
+  for (int frame = 0; frame < options.windFrames; ++frame) {
+    const double t = keyframeTime(options, frame);
+    std::vector<glm::vec3> offsets;
+    for (const ImpostorSegment& s : segments) {
+      if (!hasCards(s)) continue;
+      const glm::vec3 lo = windOffset(glm::vec3(s.from), nodeWindPoint(skeleton, s.fromNode), options.wind, height, t);
+      const glm::vec3 hi = windOffset(glm::vec3(s.to), nodeWindPoint(skeleton, s.toNode), options.wind, height, t);
+      for (int card = 0; card < 2; ++card) offsets.insert(offsets.end(), {lo, lo, hi, hi});
+    }
+    poses.push_back(std::move(offsets));
+  }
+  return poses;
+}
+
+// Leaves move with the node they hang from (four corners per leaf, in leafCards' order).
+std::vector<std::vector<glm::vec3>> leafPoses(const Skeleton& skeleton, const TreeAssetOptions& options, double height) {
+  const std::vector<WindPoint> points = leafWindPoints(skeleton);
+  std::vector<std::vector<glm::vec3>> poses;
+  for (int frame = 0; frame < options.windFrames; ++frame) {
+    const double t = keyframeTime(options, frame);
+    std::vector<glm::vec3> offsets;
+    offsets.reserve(4 * skeleton.leaves.size());
+    for (std::size_t i = 0; i < skeleton.leaves.size(); ++i) {
+      const glm::vec3 base = windOffset(glm::vec3(skeleton.leaves[i].position), points[i], options.wind, height, t);
+      offsets.insert(offsets.end(), {base, base, base, base});
+    }
+    poses.push_back(std::move(offsets));
+  }
+  return poses;
+}
+
+}  // namespace
+
+TreeAsset makeTreeAsset(const Skeleton& skeleton, const std::string& name, const TreeAssetOptions& options, const TreeMesh* finest,
                         const std::function<void(const std::string&)>& progress) {
   TreeAsset asset;
   asset.name = name;
@@ -101,21 +167,31 @@ TreeAsset makeTreeAsset(const Skeleton& skeleton, const std::string& name, const
       progress("level of detail " + std::to_string(lod) + ": meshing stem levels 0-" + std::to_string(lodLevels - 1) +
                (options.subdivide > 0 ? ", " + std::to_string(options.subdivide) + " Catmull-Clark levels" : std::string()));
     }
-    QuadMesh coarse;
+    TreeMesh coarse;
     if (lod > 0 || finest == nullptr) {
       BuildOptions build;
       build.mesh = options.mesh;
       build.mesh.levels = lodLevels;
       build.patches = false;
-      coarse = buildTree(skeleton, build).mesh.mesh;
+      coarse = buildTree(skeleton, build).mesh;
     }
-    const QuadMesh& mesh = lod > 0 || finest == nullptr ? coarse : *finest;
-    level.bark = options.subdivide > 0 ? subdivide(mesh, options.subdivide, options.mesh.maxQuads) : mesh;
+    const TreeMesh& cage = lod > 0 || finest == nullptr ? coarse : *finest;
+    level.bark = options.subdivide > 0 ? subdivide(cage.mesh, options.subdivide, options.mesh.maxQuads) : cage.mesh;
     // Stubs are never meshed, so every level of detail has their cards too (wheat's grains).
-    if (options.branchCards) level.branchCards = branchCards(impostorSegments(skeleton, lodLevels));
+    const std::vector<ImpostorSegment> segments = options.branchCards ? impostorSegments(skeleton, lodLevels) : std::vector<ImpostorSegment>{};
+    level.branchCards = branchCards(segments);
+    if (options.wind.on()) {
+      if (progress) progress("level of detail " + std::to_string(lod) + ": " + std::to_string(options.windFrames) + " wind poses");
+      level.barkPoses = barkPoses(skeleton, cage, level.bark, options, windHeight(skeleton));
+      level.branchCardPoses = branchCardPoses(skeleton, segments, options, windHeight(skeleton));
+    }
     asset.lods.push_back(std::move(level));
   }
   if (options.leaves) asset.leaves = leafCards(skeleton.leaves);
+  if (options.wind.on()) {
+    if (options.leaves) asset.leafPoses = leafPoses(skeleton, options, windHeight(skeleton));
+    asset.windPeriod = options.wind.period();
+  }
   return asset;
 }
 

@@ -16,6 +16,8 @@
 #include "mesh/impostor_segments.hpp"
 #include "mesh/mesh_options.hpp"
 #include "mesh/quad_mesh.hpp"
+#include "mesh/tree_mesh.hpp"
+#include "tree/wind.hpp"
 
 namespace arbor {
 
@@ -48,6 +50,8 @@ struct AssetLod {
   int meshedLevels = 0;    // stem levels in the mesh (the deeper ones are cards)
   QuadMesh bark;
   CardMesh branchCards;
+  // With wind: per keyframe, each vertex's offset from its rest position (bark, then branch cards).
+  std::vector<std::vector<glm::vec3>> barkPoses, branchCardPoses;
 };
 
 // PNG files' bytes; an empty string leaves that map out.
@@ -62,6 +66,8 @@ struct TreeAsset {
   std::string name;
   std::vector<AssetLod> lods;  // lods[0] the most detailed; the others coarser, in order
   CardMesh leaves;             // shared by every level of detail
+  std::vector<std::vector<glm::vec3>> leafPoses;  // with wind: per keyframe, each leaf corner's offset
+  double windPeriod = 0.0;     // seconds the keyframes span, evenly, looping (0: no wind animation)
   AssetTextures textures;
 };
 
@@ -71,14 +77,16 @@ struct TreeAssetOptions {
   int subdivide = 0;       // Catmull-Clark levels applied to every bark mesh (OpenSubdiv)
   bool leaves = true;
   bool branchCards = true; // cards for the stem levels a level of detail does not mesh (and for stubs)
+  WindSettings wind;       // on: every level, card and leaf gets `windFrames` poses over one gust period
+  int windFrames = 24;     // keyframes per period (the faster sways are coarser sampled; leaves do not flutter)
 };
 
-// The tree built at each level of detail (tree/build_tree), with its leaf and branch cards; textures are the
-// caller's (they live in the engine's assets). `finest`: the finest level's coarse mesh when the caller has
-// built it already (with options.mesh). `progress` hears each level of detail as it is built. Throws what
-// buildTree and subdivide throw.
+// The tree built at each level of detail (tree/build_tree), with its leaf and branch cards and, with wind, their
+// poses (tree/wind: the cage posed, then subdivided); textures are the caller's (they live in the engine's
+// assets). `finest`: the finest level's coarse mesh when the caller has built it already (with options.mesh).
+// `progress` hears each level of detail as it is built. Throws what buildTree and subdivide throw.
 TreeAsset makeTreeAsset(const Skeleton& skeleton, const std::string& name, const TreeAssetOptions& options,
-                        const QuadMesh* finest = nullptr, const std::function<void(const std::string&)>& progress = {});
+                        const TreeMesh* finest = nullptr, const std::function<void(const std::string&)>& progress = {});
 
 // A bark mesh alone: one level of detail, no cards, no textures (the exporters' simplest input).
 TreeAsset barkOnlyAsset(QuadMesh bark, const std::string& name);

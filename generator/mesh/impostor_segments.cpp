@@ -23,7 +23,8 @@ std::vector<ImpostorSegment> impostorSegments(const Skeleton& skeleton, int from
     const double start = faked(parent) && parentIndex < i ? v[parentIndex] : 0.0;
     const double length = glm::distance(parent.world.position, node.world.position);
     v[i] = start + barkTextureAdvance(length, 0.5 * (node.startRadius + node.radius));
-    segments.push_back({parent.world.position, node.world.position, node.startRadius, node.radius, start, v[i], node.level});
+    segments.push_back({parent.world.position, node.world.position, node.startRadius, node.radius, start, v[i], node.level,
+                        node.parent, static_cast<std::int32_t>(i)});
   }
   return segments;
 }
@@ -42,7 +43,7 @@ std::vector<ImpostorSegment> sketchSegments(const Skeleton& skeleton, int fromLe
       const double length = glm::distance(start.world.position, node.world.position);
       const double fromRadius = from == stem.attachNode ? stem.startRadius : start.radius;
       const double next = v + barkTextureAdvance(length, 0.5 * (fromRadius + node.radius));
-      if (length > 0.0) segments.push_back({start.world.position, node.world.position, fromRadius, node.radius, v, next, stem.level});
+      if (length > 0.0) segments.push_back({start.world.position, node.world.position, fromRadius, node.radius, v, next, stem.level, from, n});
       v = next;
       from = n;
     }

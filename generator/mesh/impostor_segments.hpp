@@ -1,6 +1,7 @@
 #pragma once
 // Fake branches (Nystad 5.5.4): the stems the mesh leaves out, as one segment per skeleton edge, for the
 // renderer to draw as view-oriented rectangles between each node and its parent, scaled by the radii.
+#include <cstdint>
 #include <vector>
 
 #include "growth/skeleton.hpp"
@@ -13,6 +14,7 @@ struct ImpostorSegment {
   double fromRadius = 0, toRadius = 0; // the edge's radius leaving the parent node, arriving at the node
   double fromV = 0, toV = 0;           // bark texture v along the stem (continuing from the stem's start)
   int level = 0;
+  std::int32_t fromNode = -1, toNode = -1;  // the skeleton nodes at the ends (what moves them in the wind)
 };
 
 // Segments of every stem of `fromLevel` and deeper, in node order (parents before children).

@@ -2,7 +2,7 @@
 #   blender -b --factory-startup --python-exit-code 1 --python tests/blender/import_tree.py -- <arbor binary> <folder>
 # Writes the palm as GLB and OBJ with `arbor generate`, imports each into an empty scene with Blender's own
 # importers, and exits non-zero unless the tree stands upright (Blender is z up), has its leaves and its
-# textures, and the bark keeps the mesh's face count.
+# textures, and the bark keeps the mesh's face count; then a GLB with wind, whose animation Blender plays.
 import os
 import subprocess
 import sys
@@ -23,8 +23,8 @@ def check(condition, what):
         failures.append(what)
 
 
-def generate(path):
-    result = subprocess.run([arbor, "generate", "palm", "--quiet", "--out", path], capture_output=True, text=True)
+def generate(path, *options):
+    result = subprocess.run([arbor, "generate", "palm", "--quiet", *options, "--out", path], capture_output=True, text=True)
     if result.returncode != 0:
         raise RuntimeError(f"arbor generate failed: {result.stdout}{result.stderr}")
 
@@ -75,6 +75,29 @@ def run():
     bpy.ops.wm.read_factory_settings(use_empty=True)
     bpy.ops.wm.obj_import(filepath=obj)  # Blender's default for OBJ: y up in the file
     check_import("OBJ", list(bpy.context.scene.objects), quads)
+
+    # Wind: morph targets become shape keys, the loop an action Blender plays.
+    windy = os.path.join(folder, "palm-wind.glb")
+    generate(windy, "--wind", "1", "--wind-frames", "8")
+    bpy.ops.wm.read_factory_settings(use_empty=True)
+    bpy.ops.import_scene.gltf(filepath=windy)
+    scene = bpy.context.scene
+    tree = [o for o in scene.objects if o.type == "MESH"][0]
+    keys = tree.data.shape_keys
+    check(keys is not None and len(keys.key_blocks) == 9, "wind: 8 shape keys and the basis")
+    action = keys.animation_data.action if keys is not None and keys.animation_data else None
+    check(action is not None and action.frame_range[1] > action.frame_range[0], "wind: an action plays the shape keys")
+
+    def evaluated(frame):
+        scene.frame_set(frame)
+        posed = tree.evaluated_get(bpy.context.evaluated_depsgraph_get())
+        positions = [v.co.copy() for v in posed.to_mesh().vertices]
+        posed.to_mesh_clear()
+        return positions
+
+    first, later = evaluated(1), evaluated(30)
+    moved = max((a - b).length for a, b in zip(first, later))
+    check(0.01 < moved < 2.0, f"wind: the tree moves between frames 1 and 30 (at most {moved:.3f} m)")
 
 
 try:

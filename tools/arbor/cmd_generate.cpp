@@ -107,7 +107,7 @@ int runGenerate(const GenerateOptions& o) {
       progress("meshed " + std::to_string(tree.mesh.quads.size()) + " quads; subdividing " + std::to_string(o.subdivide) +
                " time(s) (about " + std::to_string(tree.mesh.quads.size() << (2 * o.subdivide)) + " quads at the finest level)");
     }
-    writeTreeFile(o.out, skeleton, source.name(), fileOptions, &tree.mesh, progress);
+    writeTreeFile(o.out, skeleton, source.name(), fileOptions, &tree, progress);
   }
   if (o.quiet) return 0;
 

@@ -16,6 +16,18 @@ void addExportOptions(CLI::App* cmd, ExportChoices& c) {
   cmd->add_flag("--no-textures", c.noTextures,
                 "No textures: glTF materials get flat colours; OBJ gets no .mtl and no PNG files beside it");
   cmd->add_flag("--triangles", c.triangles, "Write triangles instead of quads to .obj");
+  cmd->add_option("--wind", c.wind.strength,
+                  "Export a wind animation (glTF/GLB: morph targets, one loop of gusts; docs/wind.md) of this strength: 0 "
+                  "none, 1 a strong breeze")
+      ->check(Number(0.0, 4.0))
+      ->capture_default_str();
+  cmd->add_option("--wind-azimuth", c.wind.azimuth, "Where the wind blows towards, degrees from +x counter-clockwise (Arbor's axes)")
+      ->check(Number(-360.0, 360.0))
+      ->capture_default_str();
+  cmd->add_option("--gust-frequency", c.wind.gustFrequency, "Gusts per second; the animation loops after one gust period")
+      ->check(Number(0.02, 4.0))
+      ->capture_default_str();
+  cmd->add_option("--wind-frames", c.windFrames, "Keyframes (morph targets) per loop")->check(Whole(4, 120))->capture_default_str();
   cmd->add_option("--up", c.up, "The .obj's up axis: y (as Blender and most tools import OBJ) or z (Arbor's own axes)")
       ->check(CLI::IsMember({"y", "z"}))
       ->capture_default_str();
@@ -31,6 +43,7 @@ TreeFileOptions treeFileOptions(const std::string& path, const ExportChoices& c,
     throw InputError(path, "--triangles", "applies to .obj only (glTF and GLB always hold triangles; a skeleton none)");
   }
   if (c.lods > 1 && obj) throw InputError(path, "--lods", "an OBJ holds one level of detail; levels of detail need .gltf or .glb");
+  if (c.wind.on() && obj) throw InputError(path, "--wind", "an OBJ cannot hold an animation; the wind animation needs .gltf or .glb");
   options.file = MeshFileOptions{c.triangles, c.up == "z" ? Up::Z : Up::Y};
   if (c.lods > 0) options.asset.lods = c.lods;
   options.asset.leaves = !c.noLeaves;
@@ -38,6 +51,8 @@ TreeFileOptions treeFileOptions(const std::string& path, const ExportChoices& c,
   options.asset.mesh = mesh;
   options.asset.subdivide = subdivide;
   options.textures = !c.noTextures;
+  options.asset.wind = c.wind;
+  options.asset.windFrames = c.windFrames;
   return options;
 }
 

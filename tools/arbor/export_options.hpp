@@ -15,9 +15,11 @@ struct ExportChoices {
   bool noLeaves = false, noCards = false, noTextures = false;
   bool triangles = false;
   std::string up = "y";
+  WindSettings wind;  // strength 0: no wind animation
+  int windFrames = 24;
 };
 
-// --lods, --no-leaves, --no-cards, --no-textures, --triangles and --up.
+// --lods, --no-leaves, --no-cards, --no-textures, --triangles, --up and the wind animation's options.
 void addExportOptions(CLI::App* cmd, ExportChoices& choices);
 
 // The options for `path` from those choices: defaultTreeFileOptions with the user's changes. Throws InputError

@@ -60,7 +60,7 @@ AssetTextures exportTextures() {
 }
 
 void writeTreeFile(const std::string& path, const Skeleton& skeleton, const std::string& name, const TreeFileOptions& options,
-                   const QuadMesh* finest, const std::function<void(const std::string&)>& progress, const std::string& field) {
+                   const TreeMesh* finest, const std::function<void(const std::string&)>& progress, const std::string& field) {
   requireMeshFile(path, field);
   const bool obj = endsWith(path, ".obj");
   TreeAssetOptions assetOptions = options.asset;

@@ -42,7 +42,7 @@ AssetTextures exportTextures();
 // when textures are on. Throws InputError(path, field) for an extension that is not a mesh file, before anything
 // is built or written. `progress` hears each step that may take a while.
 void writeTreeFile(const std::string& path, const Skeleton& skeleton, const std::string& name, const TreeFileOptions& options,
-                   const QuadMesh* finest = nullptr, const std::function<void(const std::string&)>& progress = {},
+                   const TreeMesh* finest = nullptr, const std::function<void(const std::string&)>& progress = {},
                    const std::string& field = "--out");
 
 }  // namespace arbor
