@@ -3,7 +3,14 @@
 
 #include "scene_uniforms.glsl"
 
+#ifdef ARBOR_POSES_VERTICES
+// wind.comp: writes the posed cage that the control-point passes then read as Vertices.
+layout(set = 0, binding = ARBOR_COMPUTE_VERTICES, std430) writeonly buffer Vertices { TreeVertex vertices[]; };
+layout(set = 0, binding = ARBOR_COMPUTE_REST, std430) readonly buffer Rest { TreeVertex rest[]; };
+layout(set = 0, binding = ARBOR_COMPUTE_WIND, std430) readonly buffer Wind { vec4 windPoints[]; };
+#else
 layout(set = 0, binding = ARBOR_COMPUTE_VERTICES, std430) readonly buffer Vertices { TreeVertex vertices[]; };
+#endif
 // Per quad patch: offset of its points, four valences and four prefixes (8 bits each), kind (0 regular,
 // 1 extraordinary, 2 fallback).
 layout(set = 0, binding = ARBOR_COMPUTE_PATCHES, std430) readonly buffer Patches { uvec4 patches[]; };
@@ -35,7 +42,8 @@ layout(push_constant) uniform Pass {
   uint commandBase;     // first of this instance's draw commands: one for bucket 0, then the tessellated
   uint flags;
   uint maxCommands;     // room for this instance's draw commands
-  uint pad0, pad1;
+  float windHeight;     // wind.comp: the tree's height (primitiveCount: its vertices)
+  uint pad1;
   uvec4 perDrawLow;     // patches per draw in buckets 0-3 ...
   uvec4 perDrawHigh;    // ... and 4-7: what the device's vertex limit allows
 } pass;

@@ -3,6 +3,7 @@
 // The coarse mesh as it is (flat mode), and the input stage of PN-triangles.
 
 #include "scene.glsl"
+#include "wind.glsl"
 
 layout(location = 0) in vec4 positionRadius;
 layout(location = 1) in vec4 normalLevel;
@@ -14,7 +15,13 @@ layout(location = 2) out vec3 uvw;
 layout(location = 3) out float radius;
 
 void main() {
-  vec4 world = draw.model * vec4(positionRadius.xyz, 1.0);
+  // The wind moves each vertex once (flat mode has no control points to rebuild).
+  vec3 position = positionRadius.xyz;
+  if (draw.windHeight > 0.0) {
+    uint w = ARBOR_WIND_VEC4S * uint(gl_VertexIndex);
+    position += windOffset(position, windPoints[w], windPoints[w + 1u], draw.windHeight);
+  }
+  vec4 world = draw.model * vec4(position, 1.0);
   worldPosition = world.xyz;
   worldNormal = mat3(draw.model) * normalLevel.xyz;
   uvw = texture.xyz;

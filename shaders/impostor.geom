@@ -7,6 +7,7 @@ layout(points) in;
 layout(triangle_strip, max_vertices = 4) out;
 
 #include "scene.glsl"
+#include "wind.glsl"
 
 layout(location = 0) flat in uint pointIndex[];
 
@@ -18,8 +19,14 @@ layout(location = 4) out float radius;
 
 void main() {
   Impostor segment = impostors[pointIndex[0]];
-  vec3 a = (draw.model * vec4(segment.fromRadius.xyz, 1.0)).xyz;
-  vec3 b = (draw.model * vec4(segment.toRadius.xyz, 1.0)).xyz;
+  vec3 from = segment.fromRadius.xyz, to = segment.toRadius.xyz;
+  if (draw.windHeight > 0.0) {  // both ends move with their skeleton nodes
+    uint w = draw.impostorWindBase + 2u * ARBOR_WIND_VEC4S * pointIndex[0];
+    from += windOffset(from, windPoints[w], windPoints[w + 1u], draw.windHeight);
+    to += windOffset(to, windPoints[w + 2u], windPoints[w + 3u], draw.windHeight);
+  }
+  vec3 a = (draw.model * vec4(from, 1.0)).xyz;
+  vec3 b = (draw.model * vec4(to, 1.0)).xyz;
   float length_ = length(b - a);
   vec3 axis = length_ > 1e-9 ? (b - a) / length_ : vec3(0.0, 0.0, 1.0);
   vec3 toEye = scene.cameraPos.xyz - 0.5 * (a + b);

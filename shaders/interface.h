@@ -18,7 +18,8 @@
 #define ARBOR_BINDING_IMPOSTORS 10
 #define ARBOR_BINDING_CONTROL 11  // control points built once per mesh (acc_control.comp, pn_control.comp)
 #define ARBOR_BINDING_VISIBLE 12  // this frame's surviving patches with their factors (patch_cull.comp)
-#define ARBOR_GRAPHICS_BINDINGS 13
+#define ARBOR_BINDING_WIND 13     // per vertex, leaf and fake-branch end: what moves it in the wind (wind.glsl)
+#define ARBOR_GRAPHICS_BINDINGS 14
 
 // Compute set 0 (compute.glsl), shared by the control-point, culling and draw-command passes.
 #define ARBOR_COMPUTE_SCENE 0
@@ -31,7 +32,9 @@
 #define ARBOR_COMPUTE_VISIBLE 7
 #define ARBOR_COMPUTE_COUNTS 8
 #define ARBOR_COMPUTE_COMMANDS 9
-#define ARBOR_COMPUTE_BINDINGS 10
+#define ARBOR_COMPUTE_REST 10     // the cage at rest, which wind.comp poses into the Vertices binding
+#define ARBOR_COMPUTE_WIND 11
+#define ARBOR_COMPUTE_BINDINGS 12
 #define ARBOR_COMPUTE_GROUP 64  // invocations per workgroup of the per-patch passes
 
 // Control records, in vec4s per primitive.
@@ -45,6 +48,9 @@
 // half angle; > 1 when the cone is too wide to cull anything).
 #define ARBOR_HULL_VEC4S 3
 
+// Wind records: two vec4 per point (reach on branch levels 1, 2, 3+; their stems' phases, w: a leaf's flutter
+// phase): the mesh's vertices, then the leaves (in the leaf buffer's order), then two per fake-branch segment.
+#define ARBOR_WIND_VEC4S 2
 // Tessellation buckets: bucket b holds the patches whose largest factor is in (2^(b-1), 2^b], so that each
 // draw can be sized for the vertices its own patches make. Bucket 0 (every factor 1) is drawn without the
 // tessellator where the frame allows it; unbucketed frames put every other patch in bucket 1.

@@ -8,6 +8,7 @@ layout(points) in;
 layout(triangle_strip, max_vertices = 4) out;
 
 #include "scene.glsl"
+#include "wind.glsl"
 
 layout(location = 0) flat in uint pointIndex[];
 
@@ -19,7 +20,15 @@ layout(location = 3) flat out float lightReaching;  // 1: unshadowed, 0: behind 
 void main() {
   uint i = pointIndex[0];
   Leaf leaf = leaves[i];
-  vec3 base = (draw.model * vec4(leaf.positionLength.xyz, 1.0)).xyz;
+  // The wind moves the blade's base with its node and flutters its tip along its normal.
+  vec3 restBase = leaf.positionLength.xyz;
+  float flutter = 0.0;
+  if (draw.windHeight > 0.0) {
+    uint w = draw.leafWindBase + ARBOR_WIND_VEC4S * i;
+    restBase += windOffset(restBase, windPoints[w], windPoints[w + 1u], draw.windHeight);
+    flutter = leafFlutter(windPoints[w + 1u].w);
+  }
+  vec3 base = (draw.model * vec4(restBase, 1.0)).xyz;
   float eyeDistance = length(base - scene.cameraPos.xyz);
   // Fraction of the leaves kept at this distance: all up to leafLod.x metres, then falling with the square of
   // the distance (as the crown's area on screen); the last tenth of the kept ones shrink away.
@@ -29,7 +38,7 @@ void main() {
   if (rank > kept) return;
   float size = scene.leafLod.x > 0.0 ? clamp((kept - rank) / (0.1 * kept), 0.0, 1.0) : 1.0;
 
-  vec3 along = mat3(draw.model) * leaf.directionWidth.xyz;
+  vec3 along = mat3(draw.model) * (leaf.directionWidth.xyz + leaf.normalKind.xyz * flutter);
   vec3 normal = normalize(mat3(draw.model) * leaf.normalKind.xyz);
   vec3 across = normalize(cross(normal, along));
   // The blade fills only part of its atlas cell's width: widen the quad so the blade has the leaf's width.

@@ -27,9 +27,15 @@ layout(set = 0, binding = ARBOR_BINDING_IMPOSTORS, std430) readonly buffer Impos
 layout(set = 0, binding = ARBOR_BINDING_BARK_COLOR) uniform sampler2D barkColor;
 layout(set = 0, binding = ARBOR_BINDING_BARK_HEIGHT) uniform sampler2D barkHeight;
 
+// Wind records (interface.h): per mesh vertex, then per leaf from draw.leafWindBase, per fake-branch end from
+// draw.impostorWindBase.
+layout(set = 0, binding = ARBOR_BINDING_WIND, std430) readonly buffer Wind { vec4 windPoints[]; };
+
 layout(push_constant) uniform Draw {
   mat4 model;
-  uint leafCount;  // this tree's leaves (trees of a forest differ)
-  uint pad0, pad1, pad2;
+  uint leafCount;         // this tree's leaves (trees of a forest differ)
+  float windHeight;       // the tree's height for the trunk's bend (0: this tree has no wind records)
+  uint leafWindBase;      // first vec4 of the leaves' wind records
+  uint impostorWindBase;  // first vec4 of the fake-branch ends' records
 } draw;
 

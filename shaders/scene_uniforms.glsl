@@ -17,6 +17,8 @@ layout(set = 0, binding = ARBOR_BINDING_SCENE, std140) uniform Scene {
   uvec4 flags;        // x: capture evaluated points, y: wireframe colouring, z: back faces in magenta
   vec4 lens;          // x: pixels covered by one unit of length at unit distance
   vec4 leafLod;       // distance (m) up to which all leaves show (0: no thinning), density, unused, shadow leaves
+  vec4 wind;          // unit direction xy (z up), strength (0: still), gust frequency (Hz)
+  vec4 windClock;     // x: seconds into the gust period (every motion repeats with it)
 } scene;
 
 struct TreeVertex {

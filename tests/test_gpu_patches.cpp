@@ -4,12 +4,16 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <functional>
 #include <set>
 
 #include "image/image_compare.hpp"
 #include "mesh/tree_mesh.hpp"
 #include "patches/acc.hpp"
 #include "patches/pn_triangle.hpp"
+#include "growth/weber_penn/weber_penn.hpp"
+#include "tree/build_tree.hpp"
+#include "tree/wind.hpp"
 #include "mesh_support.hpp"
 #include "render_support.hpp"
 #include "test_support.hpp"
@@ -295,5 +299,84 @@ TEST_CASE("culling changes no pixel, with uniform and adaptive factors", "[rende
     CHECK(all.gpu.patchesCulled == 0);
     CHECK(culled.gpu.patchesCulled > patches.size() / 20);
     CHECK(compareImages(picture, session.image(), 0).pixelsOverThreshold == 0);
+  }
+}
+
+TEST_CASE("with wind the control points are the CPU wind model's posed cage refined, and at rest again once it stops", "[render][patches][wind]") {
+  GrowthOptions growth;
+  growth.seed = 1;
+  growth.levels = 3;
+  const Skeleton skeleton = generateSkeleton(test::loadPreset("quaking-aspen"), growth);
+  BuildOptions build;
+  build.wind = true;
+  const TreeGeometry geometry = buildTree(skeleton, build);
+  const QuadMesh& mesh = geometry.mesh.mesh;
+  const PatchSet& patches = geometry.patches;
+  render::RenderSession session(test::vulkan(), kWidth, kHeight, VK_SAMPLE_COUNT_1_BIT, test::textures());
+  session.setTree(mesh, patches, skeleton.leaves, geometry.impostors, &geometry.wind);
+  render::RenderSettings settings;
+  settings.tessLevel = 2.0f;
+  settings.wind.strength = 2.0;
+  settings.wind.azimuth = 130.0;
+  settings.windSeconds = 2.7;
+  drawOnce(session, settings);
+
+  // The cage posed on the CPU (generator/tree/wind.cpp), then ACC's control points of it.
+  std::vector<glm::dvec3> posed(mesh.vertexCount());
+  double largest = 0.0;
+  for (std::size_t v = 0; v < posed.size(); ++v) {
+    const glm::vec3 offset = windOffset(mesh.positions[v], geometry.wind.mesh[v], settings.wind, geometry.wind.height, settings.windSeconds);
+    posed[v] = glm::dvec3(mesh.positions[v]) + glm::dvec3(offset);
+    largest = std::max(largest, static_cast<double>(glm::length(offset)));
+  }
+  CHECK(largest > 0.1);  // the wind moved the tree noticeably
+  auto compare = [&](const std::function<glm::dvec3(std::uint32_t)>& position) {
+    const std::vector<glm::vec4> acc = session.renderer().readControl(*session.tree(), render::RenderMode::ACC);
+    REQUIRE(acc.size() == patches.size() * ARBOR_ACC_CONTROL_VEC4S);
+    double worst = 0.0;
+    for (std::size_t p = 0; p < patches.size(); ++p) {
+      if (patches.kind[p] == PatchKind::Fallback) continue;
+      const auto points = accControlPoints(patches, p, position);
+      for (int i = 0; i < 16; ++i) worst = std::max(worst, worstRelative(glm::vec3(acc[p * ARBOR_ACC_CONTROL_VEC4S + static_cast<std::size_t>(i)]), points[static_cast<std::size_t>(i)]));
+    }
+    return worst;
+  };
+  // GLSL's single-precision sines against double: a few parts in a million of the tree's size.
+  CHECK(compare([&](std::uint32_t v) { return posed[v]; }) < 2e-5);
+  settings.wind.strength = 0.0;
+  drawOnce(session, settings);
+  CHECK(compare([&](std::uint32_t v) { return glm::dvec3(mesh.positions[v]); }) < 2e-6);
+}
+
+TEST_CASE("the wind moves the picture, leaves and fake branches with it, and still air draws the tree as without wind", "[render][wind]") {
+  GrowthOptions growth;
+  growth.seed = 1;
+  growth.levels = 3;
+  const Skeleton skeleton = generateSkeleton(test::loadPreset("quaking-aspen"), growth);
+  BuildOptions build;
+  build.wind = true;
+  build.mesh.levels = 2;
+  const TreeGeometry geometry = buildTree(skeleton, build);
+  render::RenderSession session(test::vulkan(), kWidth, kHeight, VK_SAMPLE_COUNT_1_BIT, test::textures());
+  session.setTree(geometry.mesh.mesh, geometry.patches, skeleton.leaves, geometry.impostors, &geometry.wind);
+  REQUIRE(session.renderer().drawsLeaves());  // lavapipe has geometry shaders
+  const float aspect = static_cast<float>(kWidth) / static_cast<float>(kHeight);
+  const render::Camera camera = render::frameBounds(render::plantedBounds(*session.tree()), 25.0f, 6.0f, aspect);
+  render::RenderSettings settings;
+  settings.leaves = true;
+  settings.impostors = true;
+  for (const render::RenderMode mode : {render::RenderMode::Flat, render::RenderMode::ACC}) {
+    INFO(render::renderModeName(mode));
+    settings.mode = mode;
+    settings.wind = WindSettings{};
+    session.render(camera, settings);
+    const Image still = session.image();
+    settings.wind.strength = 0.0;
+    settings.windSeconds = 3.0;
+    session.render(camera, settings);
+    CHECK(compareImages(still, session.image(), 0).pixelsOverThreshold == 0);
+    settings.wind.strength = 2.0;
+    session.render(camera, settings);
+    CHECK(compareImages(still, session.image(), 8).pixelsOverThreshold > 50);
   }
 }

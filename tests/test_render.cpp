@@ -10,6 +10,7 @@
 #include "growth/weber_penn/weber_penn.hpp"
 #include "image/image_compare.hpp"
 #include "mesh/tree_mesh.hpp"
+#include "tree/build_tree.hpp"
 #include "mesh_support.hpp"
 #include "render_support.hpp"
 #include "test_support.hpp"
@@ -173,19 +174,31 @@ TEST_CASE("splitting the tree into draws does not change the picture", "[render]
   }
 }
 
-TEST_CASE("adaptive tessellation with displacement leaves no cracks between patches", "[render]") {
-  // Every point the evaluation stage emits on a patch's border must be emitted by the neighbour too (no
-  // T-junction: both cut the shared edge alike) and be displaced to the same place (no gap). Near flip seams
-  // the two sides read the texture mirrored, which the seam fade hides: there the gap is measured, not zero.
-  const TreeMesh tree = test::meshOf("black-tupelo", 1, 2);
-  const PatchSet patches = buildPatches(tree.mesh);
+namespace {
+
+// Every point the evaluation stage emits on a patch's border must be emitted by the neighbour too (no
+// T-junction: both cut the shared edge alike) and be displaced to the same place (no gap). Near flip seams
+// the two sides read the texture mirrored, which the seam fade hides: there the gap is measured, not zero.
+// With wind the control cage is posed first: the same must hold of the posed surface.
+void requireNoCracks(const WindSettings& wind) {
+  GrowthOptions growth;
+  growth.seed = 1;
+  growth.levels = 2;
+  const Skeleton skeleton = generateSkeleton(test::loadPreset("black-tupelo"), growth);
+  BuildOptions build;
+  build.wind = true;
+  const TreeGeometry geometry = buildTree(skeleton, build);
+  const TreeMesh& tree = geometry.mesh;
+  const PatchSet& patches = geometry.patches;
   render::RenderSession session(test::vulkan(), 160, 200, VK_SAMPLE_COUNT_1_BIT, test::textures());
-  session.setTree(tree.mesh, patches);
+  session.setTree(tree.mesh, patches, {}, {}, &geometry.wind);
   session.renderer().setCapture(2000000);
   render::RenderSettings settings;
   settings.cull = false;            // every patch, so every edge has both its sides
   settings.adaptivePixels = 1.0f;   // looking up the trunk: factors from 1 to the maximum
   settings.displacement = 0.5f;
+  settings.wind = wind;
+  settings.windSeconds = 1.3;
   const render::FrameResult frame = session.render(render::parseCamera("1.0,-1.6,0.6,0,0,6,70"), settings);
   const auto points = session.renderer().captured();
   REQUIRE(points.size() < 2000000);  // all captured
@@ -233,4 +246,15 @@ TEST_CASE("adaptive tessellation with displacement leaves no cracks between patc
   CHECK(apart == 0);
   CHECK(worstNearSeam < 0.01);  // measured 2.4e-3 radii at displacement 0.5
   WARN("largest gap within the seam fade: " << worstNearSeam << " branch radii");
+}
+
+}  // namespace
+
+TEST_CASE("adaptive tessellation with displacement leaves no cracks between patches", "[render]") { requireNoCracks(WindSettings{}); }
+
+TEST_CASE("in the wind, adaptive tessellation with displacement still leaves no cracks", "[render][wind]") {
+  WindSettings wind;
+  wind.strength = 2.0;
+  wind.azimuth = 60.0;
+  requireNoCracks(wind);
 }

@@ -143,6 +143,21 @@ TEST_CASE("the viewer answers keys: F12 takes a screenshot, W moves the camera, 
   CHECK(moved.pixelsOverThreshold > 1000);  // W brought the orbit camera closer
 }
 
+TEST_CASE("the viewer's trees sway in the wind, still air draws them as without wind", "[view][wind]") {
+  const std::string path = palmPath();
+  const std::string common = "palm --size 160x120 --camera-path " + path + " --frames 2 --screenshot-every 2 --out ";
+  std::vector<Image> frames;
+  for (const char* wind : {"", " --wind 0", " --wind 3 --wind-azimuth 90"}) {
+    const std::string dir = freshDir(std::string("view-wind") + std::to_string(frames.size()));
+    const Result r = run(kNoDisplay, common + dir + wind);
+    INFO(r.output);
+    REQUIRE(r.exitCode == 0);
+    frames.push_back(readPng((fs::path(dir) / "frame-0002.png").string()));
+  }
+  CHECK(compareImages(frames[0], frames[1], 0).pixelsOverThreshold == 0);
+  CHECK(compareImages(frames[0], frames[2], 16).pixelsOverThreshold > 20);
+}
+
 TEST_CASE("without a display the viewer renders a forest offscreen and says where", "[view]") {
   const std::string dir = freshDir("view-forest");
   const Result r = run(kNoDisplay, "palm quaking-aspen --forest 12 --seeds 1 --size 200x120 --levels-note --out " + dir);

@@ -73,7 +73,7 @@ Forest::Forest(const vk::VulkanContext& context, const std::vector<DetailedTree>
     float reach = 0.0f;
     for (std::uint32_t d = 0; d < kDetailLevels; ++d) {
       const TreeGeometry& g = built.details[d];
-      tree.detail[d] = uploadTree(context, g.mesh.mesh, g.patches, built.leaves, g.impostors, g.sketch, true);
+      tree.detail[d] = uploadTree(context, g.mesh.mesh, g.patches, built.leaves, g.impostors, g.sketch, true, &g.wind);
     }
     for (const glm::vec3& p : built.details[0].mesh.mesh.positions) reach = std::max(reach, glm::length(glm::vec2(p)));
     tree.bounds = tree.detail[0].bounds;

@@ -7,6 +7,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/vec4.hpp>
 
+#include "interface.h"
 #include "patches/acc.hpp"
 
 namespace arbor::render {
@@ -36,7 +37,7 @@ std::uint32_t pack(const std::array<std::uint8_t, 4>& bytes) {
 
 GpuTree uploadTree(const vk::VulkanContext& context, const QuadMesh& mesh, const PatchSet& patches,
                    const std::vector<Leaf>& leaves, const std::vector<ImpostorSegment>& impostors,
-                   const std::vector<ImpostorSegment>& sketch, bool far) {
+                   const std::vector<ImpostorSegment>& sketch, bool far, const TreeWind* wind) {
   std::vector<GpuVertex> vertices(mesh.vertexCount());
   for (std::size_t i = 0; i < vertices.size(); ++i) {
     vertices[i] = {glm::vec4(mesh.positions[i], mesh.radius[i]), glm::vec4(mesh.normals[i], mesh.level[i]),
@@ -67,6 +68,7 @@ GpuTree uploadTree(const vk::VulkanContext& context, const QuadMesh& mesh, const
   tree.patches = vk::uploadBuffer(context, records.data(), records.size() * sizeof(glm::uvec4), storage);
   tree.points = vk::uploadBuffer(context, patches.points.data(), patches.points.size() * sizeof(std::uint32_t), storage);
   tree.triangles = static_cast<std::uint32_t>(triangles.size());
+  tree.vertexCount = static_cast<std::uint32_t>(mesh.vertexCount());
   tree.patchCount = static_cast<std::uint32_t>(patches.size());
   // Leaves in a random order (Nystad 6.5): thinning and self-shadowing take prefixes of it.
   std::vector<GpuLeaf> leafRecords;
@@ -76,9 +78,13 @@ GpuTree uploadTree(const vk::VulkanContext& context, const QuadMesh& mesh, const
                            glm::vec4(glm::normalize(glm::vec3(l.direction)), static_cast<float>(0.5 * l.width)),
                            glm::vec4(glm::normalize(glm::vec3(l.normal)), static_cast<float>(l.kind))});
   }
+  std::vector<std::size_t> leafOrder(leafRecords.size());
+  for (std::size_t i = 0; i < leafOrder.size(); ++i) leafOrder[i] = i;
   std::mt19937 shuffle(0x1eaf5eedu);
   for (std::size_t i = leafRecords.size(); i > 1; --i) {
-    std::swap(leafRecords[i - 1], leafRecords[std::uniform_int_distribution<std::size_t>(0, i - 1)(shuffle)]);
+    const std::size_t j = std::uniform_int_distribution<std::size_t>(0, i - 1)(shuffle);
+    std::swap(leafRecords[i - 1], leafRecords[j]);
+    std::swap(leafOrder[i - 1], leafOrder[j]);
   }
   tree.leafCount = static_cast<std::uint32_t>(leafRecords.size());
   if (!leaves.empty()) tree.leafBounds = {glm::vec3(leaves.front().position), glm::vec3(leaves.front().position)};
@@ -103,8 +109,26 @@ GpuTree uploadTree(const vk::VulkanContext& context, const QuadMesh& mesh, const
   if (!impostorRecords.empty()) {
     tree.impostors = vk::uploadBuffer(context, impostorRecords.data(), impostorRecords.size() * sizeof(GpuImpostor), storage);
   }
+  // Wind records, when the tree has them for every vertex, leaf and segment end (the leaves in their shuffled order).
+  const std::size_t segments = impostors.size() + sketch.size();
+  if (wind && wind->height > 0.0 && wind->mesh.size() == mesh.vertexCount() && wind->leaves.size() == leaves.size() &&
+      wind->segmentEnds.size() == 2 * segments) {
+    std::vector<glm::vec4> windRecords;
+    windRecords.reserve(ARBOR_WIND_VEC4S * (mesh.vertexCount() + leaves.size() + 2 * segments));
+    auto add = [&windRecords](const WindPoint& p, float flutterPhase) {
+      windRecords.emplace_back(p.reach[0], p.reach[1], p.reach[2], 0.0f);
+      windRecords.emplace_back(p.phase[0], p.phase[1], p.phase[2], flutterPhase);
+    };
+    for (const WindPoint& p : wind->mesh) add(p, 0.0f);
+    tree.leafWindBase = static_cast<std::uint32_t>(windRecords.size());
+    for (const std::size_t i : leafOrder) add(wind->leaves[i], leafFlutterPhase(static_cast<std::uint32_t>(i)));
+    tree.impostorWindBase = static_cast<std::uint32_t>(windRecords.size());
+    for (const WindPoint& p : wind->segmentEnds) add(p, 0.0f);
+    tree.wind = vk::uploadBuffer(context, windRecords.data(), windRecords.size() * sizeof(glm::vec4), storage);
+    tree.windHeight = static_cast<float>(wind->height);
+  }
   tree.bytes = tree.vertices.size() + tree.farVertices.size() + tree.indices.size() + tree.patches.size() + tree.points.size() + tree.leaves.size() +
-               tree.impostors.size();
+               tree.impostors.size() + tree.wind.size();
   static std::atomic<std::uint64_t> uploads{0};
   tree.id = ++uploads;
   tree.bounds = meshBounds(mesh);

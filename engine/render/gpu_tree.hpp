@@ -6,6 +6,7 @@
 #include "mesh/impostor_segments.hpp"
 #include "mesh/quad_mesh.hpp"
 #include "patches/patch_set.hpp"
+#include "tree/wind.hpp"
 #include "vk/buffer.hpp"
 
 namespace arbor::render {
@@ -18,9 +19,12 @@ struct GpuTree {
   vk::Buffer points;     // control point vertex indices
   vk::Buffer leaves;     // per leaf: base + length, direction + half width, normal + kind; in random order
   vk::Buffer impostors;  // per fake-branch segment: parent node + radius, node + radius, bark v at both, level
+  vk::Buffer wind;       // wind records (interface.h): vertices, leaves (in their buffer's order), segment ends
+  float windHeight = 0;  // the tree's height for the trunk's bend; 0: no wind records
+  std::uint32_t leafWindBase = 0, impostorWindBase = 0;  // vec4 indices in `wind`
   std::uint32_t leafCount = 0, impostorCount = 0;
   std::uint32_t sketchCount = 0;  // the sketch's segments follow the impostors' in the same buffer
-  std::uint32_t triangles = 0, patchCount = 0;
+  std::uint32_t vertexCount = 0, triangles = 0, patchCount = 0;
   std::uint32_t regular = 0, extraordinary = 0, fallback = 0;
   std::size_t bytes = 0;  // all buffers together
   std::uint64_t id = 0;   // unique per upload: the renderer keeps this mesh's control points under it
@@ -38,6 +42,6 @@ Bounds plantedBounds(const GpuTree& tree);
 // `impostors` are the fake branches standing in for the stems the mesh leaves out.
 GpuTree uploadTree(const vk::VulkanContext& context, const QuadMesh& mesh, const PatchSet& patches,
                    const std::vector<Leaf>& leaves = {}, const std::vector<ImpostorSegment>& impostors = {},
-                   const std::vector<ImpostorSegment>& sketch = {}, bool far = false);
+                   const std::vector<ImpostorSegment>& sketch = {}, bool far = false, const TreeWind* wind = nullptr);
 
 }  // namespace arbor::render

@@ -5,6 +5,7 @@
 
 #include "spirv_draw_commands_comp.h"
 #include "spirv_patch_cull_comp.h"
+#include "spirv_wind_comp.h"
 #include "spirv_patch_vert.h"
 #include "spirv_line_frag.h"
 #include "spirv_line_vert.h"
@@ -193,7 +194,7 @@ void createComputeLayouts(VkDevice device, Pipelines& p) {
 }  // namespace
 
 void Pipelines::destroy(VkDevice device) {
-  std::vector<VkPipeline> all{sky, ground, leaves, impostors, ceiling, lines, cull, drawCommands};
+  std::vector<VkPipeline> all{sky, ground, leaves, impostors, ceiling, lines, cull, drawCommands, wind};
   for (const ModePipelines& m : modes) {
     all.insert(all.end(), {m.surface.fill, m.surface.wireframe, m.surface.twoSided, m.corners.fill, m.corners.wireframe,
                            m.corners.twoSided, m.build});
@@ -222,7 +223,7 @@ Pipelines createPipelines(const vk::VulkanContext& context, VkRenderPass renderP
   // thousands of split tessellation draws (adaptive ACC went from 1.4 to 2.1 s with two bindings for all).
   const VkShaderStageFlags evaluation = VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT;
   const VkShaderStageFlags pointStages = geometry ? VkShaderStageFlags{VK_SHADER_STAGE_GEOMETRY_BIT} : VkShaderStageFlags{VK_SHADER_STAGE_VERTEX_BIT};
-  const std::array<VkDescriptorSetLayoutBinding, 9> bindings{{
+  const std::array<VkDescriptorSetLayoutBinding, 10> bindings{{
       {ARBOR_BINDING_SCENE, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, all, nullptr},
       {ARBOR_BINDING_BARK_COLOR, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
       {ARBOR_BINDING_BARK_HEIGHT, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_VERTEX_BIT | evaluation | VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
@@ -233,6 +234,7 @@ Pipelines createPipelines(const vk::VulkanContext& context, VkRenderPass renderP
       {ARBOR_BINDING_CONTROL, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1,
        VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT | evaluation, nullptr},
       {ARBOR_BINDING_VISIBLE, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT, nullptr},
+      {ARBOR_BINDING_WIND, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT | pointStages, nullptr},
   }};
   createLayouts(device, bindings.data(), static_cast<std::uint32_t>(bindings.size()), {all, 0, sizeof(DrawConstants)}, p.setLayout,
                 p.layout);
@@ -259,6 +261,7 @@ Pipelines createPipelines(const vk::VulkanContext& context, VkRenderPass renderP
   createComputeLayouts(device, p);
   p.cull = buildCompute(device, p.computeLayout, stage(VK_SHADER_STAGE_COMPUTE_BIT, spirv_patch_cull_comp));
   p.drawCommands = buildCompute(device, p.computeLayout, stage(VK_SHADER_STAGE_COMPUTE_BIT, spirv_draw_commands_comp));
+  p.wind = buildCompute(device, p.computeLayout, stage(VK_SHADER_STAGE_COMPUTE_BIT, spirv_wind_comp));
   auto surface = [&](const PipelineSpec& spec) {
     SurfacePipelines s;
     s.fill = build(device, renderPass, p.layout, samples, spec);

@@ -31,6 +31,7 @@ struct Pipelines {
   std::array<ModePipelines, kRenderModeCount> modes{};  // by RenderMode
   VkPipeline cull = VK_NULL_HANDLE;          // per frame: cull, set factors, bucket (patch_cull.comp)
   VkPipeline drawCommands = VK_NULL_HANDLE;  // per frame: buckets -> indirect draws (draw_commands.comp)
+  VkPipeline wind = VK_NULL_HANDLE;          // per frame with wind: the rest cage posed (wind.comp)
   VkPipeline leaves = VK_NULL_HANDLE;     // null where the device has no geometry shaders
   VkPipeline impostors = VK_NULL_HANDLE;  // fake branches; null likewise
   VkPipeline ceiling = VK_NULL_HANDLE;    // ACC's patches with trivial stages (bench tess)
@@ -44,7 +45,9 @@ struct Pipelines {
 struct DrawConstants {
   float model[16];
   std::uint32_t leafCount;
-  std::uint32_t pad[3];
+  float windHeight;                // 0: the tree has no wind records
+  std::uint32_t leafWindBase;      // vec4 index of the leaves' wind records
+  std::uint32_t impostorWindBase;  // and of the fake-branch ends'
 };
 static_assert(sizeof(DrawConstants) == ARBOR_DRAW_CONSTANTS_BYTES, "scene.glsl's Draw block");
 
@@ -57,7 +60,8 @@ struct PassConstants {
   std::uint32_t commandBase;     // first of its draw commands
   std::uint32_t flags;           // PassFlag bits
   std::uint32_t maxCommands;
-  std::uint32_t pad[2];
+  float windHeight;              // wind.comp: the tree's height (primitiveCount: its vertices)
+  std::uint32_t pad;
   std::uint32_t perDraw[8];      // patches per draw in each bucket
 };
 static_assert(sizeof(PassConstants) == ARBOR_PASS_CONSTANTS_BYTES, "compute.glsl's Pass block");

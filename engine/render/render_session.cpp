@@ -13,9 +13,9 @@ RenderSession::RenderSession(const vk::VulkanContext& context, std::uint32_t wid
       renderer_(context, target_.renderPass(), samples, textures) {}
 
 void RenderSession::setTree(const QuadMesh& mesh, const PatchSet& patches, const std::vector<Leaf>& leaves,
-                            const std::vector<ImpostorSegment>& impostors) {
+                            const std::vector<ImpostorSegment>& impostors, const TreeWind* wind) {
   renderer_.setTree(nullptr);
-  tree_ = std::make_unique<GpuTree>(uploadTree(context_, mesh, patches, leaves, impostors));
+  tree_ = std::make_unique<GpuTree>(uploadTree(context_, mesh, patches, leaves, impostors, {}, false, wind));
   renderer_.setTree(tree_.get());
 }
 

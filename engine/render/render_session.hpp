@@ -21,8 +21,9 @@ class RenderSession {
   RenderSession(const vk::VulkanContext& context, std::uint32_t width, std::uint32_t height, VkSampleCountFlagBits samples,
                 const TreeTextures& textures);
 
+  // `wind`: what moves the tree in the wind (tree/wind.hpp); without it the tree stands still in any wind.
   void setTree(const QuadMesh& mesh, const PatchSet& patches, const std::vector<Leaf>& leaves = {},
-               const std::vector<ImpostorSegment>& impostors = {});
+               const std::vector<ImpostorSegment>& impostors = {}, const TreeWind* wind = nullptr);
   const GpuTree* tree() const { return tree_.get(); }
   // The session's own tree planted where it stands (empty without one): what render(camera, settings) draws.
   std::vector<TreeInstance> treeInstances() const;

@@ -28,6 +28,8 @@ struct SceneUniforms {
   glm::uvec4 flags;
   glm::vec4 lens;
   glm::vec4 leafLod;
+  glm::vec4 wind;       // direction xy, strength, gust frequency
+  glm::vec4 windClock;  // seconds into the gust period
 };
 
 constexpr std::uint32_t kCaptureHeader = 16;  // count, capacity, two words of padding
@@ -76,7 +78,7 @@ TreeRenderer::TreeRenderer(const vk::VulkanContext& context, VkRenderPass render
   const VkDevice device = context.device();
   constexpr std::uint32_t kSets = kMaxTrees * kFramesInFlight;
   const std::array<VkDescriptorPoolSize, 3> sizes{{{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kSets},
-                                                   {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 5 * kSets},
+                                                   {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 6 * kSets},
                                                    {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 3 * kSets}}};
   VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
   poolInfo.maxSets = kMaxTrees * kFramesInFlight;
@@ -199,6 +201,7 @@ void TreeRenderer::writeSet(const FrameSlot& frame, VkDescriptorSet set, const G
   // The control points are bound when a tessellated mode first draws the tree (bindControl).
   const VkDescriptorBufferInfo controlInfo{fallback, 0, VK_WHOLE_SIZE};
   const VkDescriptorBufferInfo visibleInfo{frame.visible.handle(), 0, VK_WHOLE_SIZE};
+  const VkDescriptorBufferInfo windInfo{tree && tree->wind.handle() != VK_NULL_HANDLE ? tree->wind.handle() : fallback, 0, VK_WHOLE_SIZE};
   auto write = [&](std::uint32_t binding, VkDescriptorType type, const VkDescriptorBufferInfo* b, const VkDescriptorImageInfo* i) {
     VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
     w.dstSet = set;
@@ -209,7 +212,7 @@ void TreeRenderer::writeSet(const FrameSlot& frame, VkDescriptorSet set, const G
     w.pImageInfo = i;
     return w;
   };
-  const std::array<VkWriteDescriptorSet, 9> writes{
+  const std::array<VkWriteDescriptorSet, 10> writes{
       write(ARBOR_BINDING_SCENE, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, &sceneInfo, nullptr),
       write(ARBOR_BINDING_BARK_COLOR, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, nullptr, &colorInfo),
       write(ARBOR_BINDING_BARK_HEIGHT, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, nullptr, &heightInfo),
@@ -218,7 +221,8 @@ void TreeRenderer::writeSet(const FrameSlot& frame, VkDescriptorSet set, const G
       write(ARBOR_BINDING_LEAF_ATLAS, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, nullptr, &atlasInfo),
       write(ARBOR_BINDING_IMPOSTORS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &impostorInfo, nullptr),
       write(ARBOR_BINDING_CONTROL, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &controlInfo, nullptr),
-      write(ARBOR_BINDING_VISIBLE, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &visibleInfo, nullptr)};
+      write(ARBOR_BINDING_VISIBLE, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &visibleInfo, nullptr),
+      write(ARBOR_BINDING_WIND, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &windInfo, nullptr)};
   vkUpdateDescriptorSets(context_.device(), static_cast<std::uint32_t>(writes.size()), writes.data(), 0, nullptr);
 }
 
@@ -339,12 +343,12 @@ bool TreeRenderer::drawnTessellated(const TreeInstance& instance, const RenderSe
   return isTessellated(s.mode) && !far && (renderModeInfo(s.mode).primitive == PatchPrimitive::Quad ? tree.patchCount : tree.triangles) > 0;
 }
 
-void TreeRenderer::bindControl(std::uint32_t treeIndex, RenderMode mode) {
+void TreeRenderer::bindControl(std::uint32_t treeIndex, RenderMode mode, bool posed) {
   const GpuTree& tree = *trees_[treeIndex];
   TreeControl& c = controls_[tree.id];
   const auto m = static_cast<std::size_t>(mode);
   const FrameSlot& frame = slot();
-  if (c.boundMode[current_] == static_cast<int>(mode) && c.boundGeneration[current_] == frame.generation) return;
+  if (c.boundMode[current_] == static_cast<int>(mode) && c.boundGeneration[current_] == frame.generation && c.boundPosed[current_] == posed) return;
   VkDescriptorSet& computeSet = c.computeSet[current_];
   if (!computeSet) {
     VkDescriptorSetAllocateInfo alloc{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
@@ -353,9 +357,12 @@ void TreeRenderer::bindControl(std::uint32_t treeIndex, RenderMode mode) {
     alloc.pSetLayouts = &pipelines_.computeSetLayout;
     vk::check(vkAllocateDescriptorSets(context_.device(), &alloc, &computeSet), "vkAllocateDescriptorSets");
   }
+  // With wind the control passes read the posed cage; wind.comp reads the rest one and the wind records.
+  const VkBuffer wind = tree.wind.handle() != VK_NULL_HANDLE ? tree.wind.handle() : tree.vertices.handle();
   const std::array<VkBuffer, ARBOR_COMPUTE_BINDINGS> buffers{
-      frame.scene.handle(), tree.vertices.handle(), tree.patches.handle(), tree.points.handle(), tree.indices.handle(),
-      c.control[m].handle(), c.hulls[m].handle(), frame.visible.handle(), frame.counts.handle(), frame.commands.handle()};
+      frame.scene.handle(), posed ? c.posed.handle() : tree.vertices.handle(), tree.patches.handle(), tree.points.handle(), tree.indices.handle(),
+      c.control[m].handle(), c.hulls[m].handle(), frame.visible.handle(), frame.counts.handle(), frame.commands.handle(),
+      tree.vertices.handle(), wind};
   std::array<VkDescriptorBufferInfo, ARBOR_COMPUTE_BINDINGS> infos{};
   std::array<VkWriteDescriptorSet, ARBOR_COMPUTE_BINDINGS + 1> writes{};
   for (std::uint32_t b = 0; b < ARBOR_COMPUTE_BINDINGS; ++b) {
@@ -379,6 +386,7 @@ void TreeRenderer::bindControl(std::uint32_t treeIndex, RenderMode mode) {
   vkUpdateDescriptorSets(context_.device(), static_cast<std::uint32_t>(writes.size()), writes.data(), 0, nullptr);
   c.boundMode[current_] = static_cast<int>(mode);
   c.boundGeneration[current_] = frame.generation;
+  c.boundPosed[current_] = posed;
 }
 
 void TreeRenderer::beginFrame(VkCommandBuffer cmd, const Camera& camera, VkExtent2D extent, const RenderSettings& s,
@@ -412,6 +420,11 @@ void TreeRenderer::beginFrame(VkCommandBuffer cmd, const Camera& camera, VkExten
   u.leafLod = glm::vec4(s.leafLodDistance, std::clamp(s.leafDensity, 0.0f, 1.0f),
                         0.0f, static_cast<float>(s.shadowLeaves));
   u.lens = glm::vec4(0.5f * static_cast<float>(extent.height) / std::tan(0.5f * camera.fovY), 0.0f, 0.0f, 0.0f);
+  // The clock folded into the gust period (every motion repeats with it), so floats keep their precision.
+  const double azimuth = glm::radians(s.wind.azimuth);
+  u.wind = glm::vec4(static_cast<float>(std::cos(azimuth)), static_cast<float>(std::sin(azimuth)), s.wind.on() ? static_cast<float>(s.wind.strength) : 0.0f,
+                     static_cast<float>(s.wind.gustFrequency));
+  u.windClock = glm::vec4(s.wind.on() ? static_cast<float>(std::fmod(s.windSeconds, s.wind.period())) : 0.0f, 0.0f, 0.0f, 0.0f);
   std::memcpy(frame.scene.mapped(), &u, sizeof u);
   if (captureCapacity_ > 0) static_cast<std::uint32_t*>(capture_.mapped())[0] = 0;
   if (frame.statistics) vkCmdResetQueryPool(cmd, frame.statistics, 0, 1);
@@ -445,23 +458,62 @@ void TreeRenderer::beginFrame(VkCommandBuffer cmd, const Camera& camera, VkExten
   if (frame.plans.empty()) return;
   ensureFrameBuffers(frame, entries, frame.plans.size() * kCounters, commands);
 
-  // Control points of meshes drawn for the first time in this mode: once per mesh, then kept.
+  // Control points of meshes drawn for the first time in this mode: once per mesh, then kept. With wind, every
+  // frame: the rest cage posed first (wind.comp), then its control points and hulls built anew.
   const RenderMode controlMode = s.mode;
   const auto m = static_cast<std::size_t>(controlMode);
+  const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
+  auto windy = [&](const GpuTree& tree) { return s.wind.on() && tree.windHeight > 0.0f; };
+  // Returns whether the buffers were missing.
+  auto ensureControl = [&](TreeControl& c, const InstancePlan& plan) {
+    if (c.control[m].handle() != VK_NULL_HANDLE) return false;
+    c.control[m] = vk::Buffer(context_, std::size_t{plan.primitives} * renderModeInfo(controlMode).controlVec4s * 16, storage,
+                              VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+    c.hulls[m] = vk::Buffer(context_, std::size_t{plan.primitives} * ARBOR_HULL_VEC4S * 16, storage, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+    c.boundMode.fill(-1);
+    return true;
+  };
+  std::vector<char> posedThisFrame(trees_.size(), 0);
+  bool posing = false;
+  for (const InstancePlan& plan : frame.plans) {
+    const GpuTree& tree = *trees_[plan.tree];
+    if (!windy(tree) || posedThisFrame[plan.tree]) continue;
+    if (!posing) {
+      // The posed cages and control points may still be read by the frame before (its commands came earlier).
+      barrier(cmd, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, 0, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0);
+      posing = true;
+    }
+    posedThisFrame[plan.tree] = 1;
+    TreeControl& c = controls_[tree.id];
+    if (c.posed.handle() == VK_NULL_HANDLE) {
+      c.posed = vk::Buffer(context_, tree.vertices.size(), storage, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+      c.boundMode.fill(-1);
+    }
+    ensureControl(c, plan);
+    bindControl(plan.tree, controlMode, true);
+    PassConstants pass{};
+    pass.primitiveCount = tree.vertexCount;
+    pass.windHeight = tree.windHeight;
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_.wind);
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_.computeLayout, 0, 1, &c.computeSet[current_], 0, nullptr);
+    vkCmdPushConstants(cmd, pipelines_.computeLayout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof pass, &pass);
+    vkCmdDispatch(cmd, (pass.primitiveCount + ARBOR_COMPUTE_GROUP - 1) / ARBOR_COMPUTE_GROUP, 1, 1);
+  }
+  if (posing) {
+    barrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT);
+  }
   bool built = false;
+  std::vector<char> builtThisFrame(trees_.size(), 0);
   for (const InstancePlan& plan : frame.plans) {
     const GpuTree& tree = *trees_[plan.tree];
     TreeControl& c = controls_[tree.id];
-    const bool missing = c.control[m].handle() == VK_NULL_HANDLE;
-    if (missing) {
-      const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
-      c.control[m] = vk::Buffer(context_, std::size_t{plan.primitives} * renderModeInfo(controlMode).controlVec4s * 16, storage,
-                                VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-      c.hulls[m] = vk::Buffer(context_, std::size_t{plan.primitives} * ARBOR_HULL_VEC4S * 16, storage, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-      c.boundMode.fill(-1);
-    }
-    bindControl(plan.tree, controlMode);
-    if (!missing) continue;
+    const bool missing = ensureControl(c, plan);
+    bindControl(plan.tree, controlMode, windy(tree));
+    // A mesh whose control points were built from a posed cage is rebuilt at rest once the wind stops.
+    const bool stale = !windy(tree) && c.posedBuild[m];
+    if ((!missing && !windy(tree) && !stale) || builtThisFrame[plan.tree]) continue;
+    builtThisFrame[plan.tree] = 1;
+    c.posedBuild[m] = windy(tree);
     PassConstants pass{};
     pass.primitiveCount = plan.primitives;
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_.modes[m].build);
@@ -546,6 +598,10 @@ void TreeRenderer::draw(VkCommandBuffer cmd, VkExtent2D extent, const RenderSett
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.layout, 0, 1, &frame.sets[tree], 0, nullptr);
     std::memcpy(constants.model, glm::value_ptr(model), sizeof constants.model);
     constants.leafCount = tree < trees_.size() ? trees_[tree]->leafCount : 0u;
+    const bool windy = tree < trees_.size() && s.wind.on() && trees_[tree]->windHeight > 0.0f;
+    constants.windHeight = windy ? trees_[tree]->windHeight : 0.0f;
+    constants.leafWindBase = windy ? trees_[tree]->leafWindBase : 0u;
+    constants.impostorWindBase = windy ? trees_[tree]->impostorWindBase : 0u;
     vkCmdPushConstants(cmd, pipelines_.layout, stages, 0, sizeof constants, &constants);
   };
   bindTree(0, glm::mat4(1.0f));

@@ -47,6 +47,9 @@ struct RenderSettings {
   std::uint32_t patchesPerDraw = 0;  // > 0: at most this many patches per draw, one bucket (tests); 0: what the driver needs
   glm::vec3 lightDirection{0.45f, -0.6f, 0.75f};
   float lightIntensity = 1.0f;
+  // Wind (docs/wind.md) on trees uploaded with wind records: the control cage is posed every frame.
+  WindSettings wind;
+  double windSeconds = 0.0;       // the scene's clock
 };
 
 struct FrameStats {
@@ -143,6 +146,9 @@ class TreeRenderer {
   // the compute set that reads them with that frame's lists.
   struct TreeControl {
     std::array<vk::Buffer, kRenderModeCount> control, hulls;
+    vk::Buffer posed;  // the cage moved by the wind this frame (wind.comp), which the control passes then read
+    std::array<bool, kFramesInFlight> boundPosed{};  // whether that frame's set reads the posed cage
+    std::array<bool, kRenderModeCount> posedBuild{};  // control points last built from a posed cage (rebuilt at rest)
     std::array<VkDescriptorSet, kFramesInFlight> computeSet{};
     std::array<int, kFramesInFlight> boundMode{-1, -1};  // the mode whose control buffers that frame's sets point at
     std::array<std::uint64_t, kFramesInFlight> boundGeneration{};  // the frame buffers' generation they point at
@@ -172,7 +178,7 @@ class TreeRenderer {
   const FrameSlot& slot() const { return slots_[current_]; }
   FrameStats statsOf(const FrameSlot& frame) const;
   void writeSet(const FrameSlot& frame, VkDescriptorSet set, const GpuTree* tree);
-  void bindControl(std::uint32_t tree, RenderMode mode);
+  void bindControl(std::uint32_t tree, RenderMode mode, bool posed);
   void ensureFrameBuffers(FrameSlot& frame, std::size_t entries, std::size_t counters, std::size_t commands);
   bool drawnTessellated(const TreeInstance& instance, const RenderSettings& s) const;
 

@@ -13,6 +13,7 @@ TreeGeometry buildTree(const Skeleton& skeleton, const BuildOptions& options) {
     g.sketch = sketchSegments(skeleton, meshLevels, skeleton.levels - 1);
   }
   if (options.patches) g.patches = buildPatches(g.mesh.mesh);
+  if (options.wind) g.wind = treeWind(skeleton, g.mesh, g.impostors, g.sketch);
   return g;
 }
 

@@ -9,12 +9,14 @@
 #include "mesh/mesh_options.hpp"
 #include "mesh/tree_mesh.hpp"
 #include "patches/patch_set.hpp"
+#include "wind.hpp"
 
 namespace arbor {
 
 struct BuildOptions {
   MeshOptions mesh;     // mesh.levels: stem levels meshed (0: all); the deeper ones become fake-branch segments
   bool patches = true;  // the GPU's 1-ring patches (off for exports and checks that need only the mesh)
+  bool wind = false;    // what moves each vertex, leaf and fake branch in the wind (the renderer's)
 };
 
 struct TreeGeometry {
@@ -22,6 +24,7 @@ struct TreeGeometry {
   PatchSet patches;
   std::vector<ImpostorSegment> impostors;  // the levels past the mesh, one segment per skeleton edge
   std::vector<ImpostorSegment> sketch;     // a coarser sketch of them, without the deepest, for trees far away
+  TreeWind wind;                           // with BuildOptions::wind
 };
 
 TreeGeometry buildTree(const Skeleton& skeleton, const BuildOptions& options = {});

@@ -39,6 +39,7 @@ std::vector<DetailedTree> growForestTrees(const ForestTreesOptions& options, con
       // The deepest d levels as fake branches over a mesh of the others (one skeleton: the same tree).
       BuildOptions build;
       build.mesh.levels = std::max(1, skeleton.levels - d);
+      build.wind = true;
       tree.details.push_back(buildTree(skeleton, build));
       quads += tree.details.back().mesh.mesh.quads.size();
       if (quads > options.maxQuads) throw tooMany(static_cast<double>(quads));

@@ -136,10 +136,27 @@ glm::vec3 windOffset(const glm::vec3& rest, const WindPoint& point, const WindSe
   return glm::vec3(offset);
 }
 
+float leafFlutterPhase(std::uint32_t index) { return phaseOf(0x9E3779B97F4A7C15ull + index); }
+
 double leafFlutter(const WindSettings& wind, std::uint32_t index, double seconds) {
   if (!wind.on()) return 0.0;
   const double w = 2.0 * std::numbers::pi * wind.gustFrequency * seconds;
-  return wind.strength * kFlutter * std::sin(kFlutterHarmonic * w + phaseOf(0x9E3779B97F4A7C15ull + index));
+  return wind.strength * kFlutter * std::sin(kFlutterHarmonic * w + leafFlutterPhase(index));
+}
+
+TreeWind treeWind(const Skeleton& skeleton, const TreeMesh& mesh, const std::vector<ImpostorSegment>& impostors,
+                  const std::vector<ImpostorSegment>& sketch) {
+  TreeWind wind;
+  wind.height = windHeight(skeleton);
+  wind.mesh = meshWindPoints(skeleton, mesh);
+  wind.leaves = leafWindPoints(skeleton);
+  for (const auto* list : {&impostors, &sketch}) {
+    for (const ImpostorSegment& s : *list) {
+      wind.segmentEnds.push_back(nodeWindPoint(skeleton, s.fromNode));
+      wind.segmentEnds.push_back(nodeWindPoint(skeleton, s.toNode));
+    }
+  }
+  return wind;
 }
 
 }  // namespace arbor

@@ -47,7 +47,19 @@ double windHeight(const Skeleton& skeleton);
 // How far `rest` moves at time `seconds`.
 glm::vec3 windOffset(const glm::vec3& rest, const WindPoint& point, const WindSettings& wind, double treeHeight, double seconds);
 
-// A leaf's flutter: the tip's displacement along the blade's normal, in blade lengths, for leaf `index`.
+// A leaf's flutter: the tip's displacement along the blade's normal, in blade lengths, for leaf `index` (its
+// phase: leafFlutterPhase).
 double leafFlutter(const WindSettings& wind, std::uint32_t index, double seconds);
+float leafFlutterPhase(std::uint32_t index);
+
+// What the renderer needs to move a built tree: the points of its mesh vertices, leaves (skeleton order) and
+// fake-branch segment ends (from, to for each segment of `impostors`, then of `sketch`), and its height.
+struct TreeWind {
+  double height = 0.0;
+  std::vector<WindPoint> mesh, leaves, segmentEnds;
+  bool empty() const { return mesh.empty() && leaves.empty() && segmentEnds.empty(); }
+};
+TreeWind treeWind(const Skeleton& skeleton, const TreeMesh& mesh, const std::vector<ImpostorSegment>& impostors,
+                  const std::vector<ImpostorSegment>& sketch);
 
 }  // namespace arbor

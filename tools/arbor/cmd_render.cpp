@@ -49,6 +49,8 @@ struct RenderOptions {
   bool impostors = false;
   int impostorLevels = 0;
   std::string light;
+  WindSettings wind;
+  double windTime = 1.0;
   bool quiet = false;
 };
 
@@ -68,6 +70,8 @@ int runRender(const RenderOptions& o) {
   const int impostorLevels = o.impostorLevels > 0 ? o.impostorLevels : (o.impostors ? 1 : 0);
   settings.impostors = impostorLevels > 0;
   if (!o.light.empty()) settings.lightDirection = parseLight(o.light);
+  settings.wind = o.wind;
+  settings.windSeconds = o.windTime;
   std::uint32_t width = 0, height = 0;
   parseSize(o.size, width, height);
   if (!endsWith(o.out, ".png")) throw InputError(o.out, "--out", "the picture is written as PNG; use a .png name");
@@ -87,13 +91,17 @@ int runRender(const RenderOptions& o) {
   const Skeleton skeleton = source.grow(growth);
   BuildOptions build;
   build.mesh.levels = meshLevels;
-  const auto [tree, patches, impostors, sketch] = buildTree(skeleton, build);
+  build.wind = settings.wind.on();
+  const TreeGeometry geometry = buildTree(skeleton, build);
+  const TreeMesh& tree = geometry.mesh;
+  const PatchSet& patches = geometry.patches;
+  const std::vector<ImpostorSegment>& impostors = geometry.impostors;
 
   vk::VulkanContext context(vulkanOptions(o.validation, o.device));
   const auto textures = render::loadTreeTextures(assetDirectory());
   const auto samples = static_cast<VkSampleCountFlagBits>(o.msaa);
   render::RenderSession session(context, width, height, samples, textures);
-  session.setTree(tree.mesh, patches, skeleton.leaves, impostors);
+  session.setTree(tree.mesh, patches, skeleton.leaves, impostors, build.wind ? &geometry.wind : nullptr);
   if ((o.leaves || settings.impostors) && !session.renderer().drawsLeaves()) {
     throw std::runtime_error(std::string(o.leaves ? "--leaves" : "--impostors") +
                              ": this Vulkan device has no geometry shaders, which leaves and fake branches need");
@@ -139,6 +147,7 @@ int runRender(const RenderOptions& o) {
     else std::printf(", tessellation factor %g", static_cast<double>(settings.tessLevel));
   }
   if (settings.displacement != 0.0f) std::printf(", displacement %g", static_cast<double>(settings.displacement));
+  if (settings.wind.on()) std::printf(", wind %g at %g s", settings.wind.strength, settings.windSeconds);
   std::printf("\n  mesh             %zu quads: %u regular, %u extraordinary, %u fallback patches; %.1f MiB on the GPU\n",
               tree.mesh.quads.size(), gpuTree.regular, gpuTree.extraordinary, gpuTree.fallback,
               static_cast<double>(gpuTree.bytes) / (1024.0 * 1024.0));
@@ -193,6 +202,14 @@ void addRenderCommand(CLI::App& app, Action& action) {
   cmd->add_option("--impostor-levels", o->impostorLevels, "Levels beyond the mesh drawn as fake branches; they carry the leaves (implies --impostors; default 1)")
       ->check(Whole(1, 3));
   cmd->add_option("--light", o->light, "Sun direction as AZIMUTH,ELEVATION in degrees (azimuth 0: from -y, the default camera's side)");
+  cmd->add_option("--wind", o->wind.strength, "Wind strength (docs/wind.md): 0 still, 1 a strong breeze; the control cage is posed before tessellation")
+      ->check(Number(0.0, 4.0))
+      ->capture_default_str();
+  cmd->add_option("--wind-azimuth", o->wind.azimuth, "Where the wind blows towards, degrees from +x counter-clockwise")
+      ->check(Number(-360.0, 360.0))
+      ->capture_default_str();
+  cmd->add_option("--gust-frequency", o->wind.gustFrequency, "Gusts per second")->check(Number(0.02, 4.0))->capture_default_str();
+  cmd->add_option("--wind-time", o->windTime, "The moment shown, in seconds")->check(Number(0.0, 1e6))->capture_default_str();
   cmd->add_option("--out", o->out, "Output PNG")->required();
   cmd->add_flag("--quiet", o->quiet, "Print nothing on success");
   cmd->callback([o, &action] { action = [o] { return runRender(*o); }; });

@@ -116,6 +116,14 @@ void drawPanel(ViewState& state, const render::ForestFrame& frame, const render:
     ImGui::SliderFloat("full mesh within (m)", &state.detail.full, 0.0f, 300.0f);
     ImGui::SliderFloat("one level faked within (m)", &state.detail.reduced, 0.0f, 600.0f);
     ImGui::SliderFloat("far beyond (m)", &state.detail.far, 0.0f, 1000.0f);
+    // Wind (docs/wind.md): the control cage posed every frame, leaves and fake branches following.
+    float wind[3] = {static_cast<float>(s.wind.strength), static_cast<float>(s.wind.azimuth), static_cast<float>(s.wind.gustFrequency)};
+    ImGui::SliderFloat("wind", &wind[0], 0.0f, 3.0f);
+    ImGui::SliderFloat("wind towards (deg)", &wind[1], -180.0f, 180.0f);
+    ImGui::SliderFloat("gusts per second", &wind[2], 0.05f, 2.0f);
+    s.wind.strength = wind[0];
+    s.wind.azimuth = wind[1];
+    s.wind.gustFrequency = std::max(0.05f, wind[2]);
     ImGui::SliderFloat("sun azimuth", &state.lightAzimuth, -180.0f, 180.0f);
     ImGui::SliderFloat("sun elevation", &state.lightElevation, -10.0f, 90.0f);
     s.lightDirection = render::sunDirection(state.lightAzimuth, state.lightElevation);

@@ -150,6 +150,8 @@ int runViewer(const ViewerOptions& o, ViewState& state, ViewerScene& scene) {
       // A slow frame must not throw the walker far; --step makes walks independent of the frame time.
       const float seconds = o.step > 0.0f ? o.step : std::min(0.25f, elapsed);
       last = now;
+      // The wind's clock: the frame time, or a 30th of a second per frame in scripts (repeatable pictures).
+      state.settings.windSeconds += scripted && o.step <= 0.0f ? 1.0 / 30.0 : static_cast<double>(seconds);
       bool screenshot = scripted && ((f + 1) % every == 0 || f + 1 == frames);
       const render::Forest& forest = scene.forest();
       if (!scripted) {
