@@ -338,10 +338,10 @@ TEST_CASE("a generated tree as glTF and GLB passes the Khronos validator", "[cli
   }
 }
 
-TEST_CASE("every preset's complete export (levels of detail, cards, leaves, textures) passes the validator cleanly", "[cli][mesh][validator]") {
+TEST_CASE("every preset's complete export (levels of detail, cards, leaves, textures, wind) passes the validator cleanly", "[cli][mesh][validator]") {
   for (const std::string& preset : allPresets()) {
     const std::string out = arbor::test::tempPath("complete-" + preset + ".glb");
-    const Result r = run("generate " + preset + " --lods 3 --quiet --out " + out);
+    const Result r = run("generate " + preset + " --lods 3 --wind 1 --wind-frames 4 --quiet --out " + out);
     INFO(preset << ": " << r.output);
     REQUIRE(r.exitCode == 0);
     const Result v = arbor::test::runCommand("node " + std::string(ARBOR_SOURCE_DIR) + "/tools/validate-gltf.mjs " + out + " 2>&1");
