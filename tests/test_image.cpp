@@ -273,6 +273,32 @@ TEST_CASE("the committed bark textures are what the generator makes", "[image][b
   CHECK(color.height == 512);
   CHECK(color.rgba == bark512().color.rgba);
   CHECK(height.rgba == bark512().height.rgba);
+  CHECK(readPng((dir / "bark_normal.png").string()).rgba == bark512().normal.rgba);
+}
+
+TEST_CASE("the normal map leans away from rising height, green up the image, blue out", "[image][bark]") {
+  // Height rising to the right (+u) and towards the image's top (against v): the normal leans left and down.
+  Image height;
+  height.width = height.height = 8;
+  height.rgba.resize(8 * 8 * 4, 255);
+  for (int y = 0; y < 8; ++y)
+    for (int x = 0; x < 8; ++x)
+      for (int c = 0; c < 3; ++c) height.rgba[static_cast<std::size_t>((y * 8 + x) * 4 + c)] = static_cast<std::uint8_t>(100 + 4 * x - 3 * y);
+  const Image n = normalMapFromHeight(height, 255.0 / 4.0);  // one grey level per texel of relief... times 255/4
+  const std::size_t middle = static_cast<std::size_t>((4 * 8 + 4) * 4);
+  CHECK(n.rgba[middle + 0] < 128);  // leans against +x
+  CHECK(n.rgba[middle + 1] < 128);  // height rises up the image: leans down
+  CHECK(n.rgba[middle + 2] > 128);
+  CHECK(n.rgba[middle + 3] == 255);
+  // A flat height map is (128, 128, 255) everywhere: straight out.
+  Image flat = height;
+  std::fill(flat.rgba.begin(), flat.rgba.end(), std::uint8_t{90});
+  const Image straight = normalMapFromHeight(flat, 6.0);
+  for (std::size_t i = 0; i < straight.rgba.size(); i += 4) {
+    CHECK(straight.rgba[i] == 128);
+    CHECK(straight.rgba[i + 1] == 128);
+    CHECK(straight.rgba[i + 2] == 255);
+  }
 }
 
 namespace {

@@ -146,7 +146,7 @@ BarkTextures makeBarkTextures(int size, std::uint32_t seed) {
   const double deviation = std::sqrt(sumSquares / static_cast<double>(count));
   const double scale = deviation > 0.0 ? kSpread / deviation : 0.0;
 
-  BarkTextures maps{opaqueImage(size), opaqueImage(size)};
+  BarkTextures maps{opaqueImage(size), opaqueImage(size), {}};
   for (int y = 0; y < size; ++y) {
     for (int x = 0; x < size; ++x) {
       const std::size_t i = static_cast<std::size_t>(y) * size + x;
@@ -159,6 +159,7 @@ BarkTextures makeBarkTextures(int size, std::uint32_t seed) {
       maps.color.rgba[4 * i + 2] = toByte(c.b);
     }
   }
+  maps.normal = normalMapFromHeight(maps.height, kBarkRelief);
   return maps;
 }
 

@@ -9,7 +9,12 @@ namespace arbor {
 struct BarkTextures {
   Image color;   // brown-grey bark, dark in the fissures; opaque
   Image height;  // grey (R = G = B), mean about 128; dark = fissure, light = plate top; opaque
+  Image normal;  // tangent-space normal map of the height (normalMapFromHeight, kBarkRelief), for exports
 };
+
+// The bark's relief in the normal map: black to white in the height map is this many texels (gentle, as the
+// colour map already darkens the fissures).
+constexpr double kBarkRelief = 6.0;
 
 // Square maps `size` pixels wide (1..16384; the renderer wants powers of two). The image's vertical axis is
 // v, along the stem: ridges and fissures run mostly vertically. Tiles seamlessly both ways. Deterministic:

@@ -39,11 +39,11 @@ void appendLine(std::string& out, const char* keyword, std::initializer_list<flo
 }
 
 template <std::size_t N>
-void appendFace(std::string& out, const std::array<std::uint32_t, N>& corners) {
+void appendFace(std::string& out, const std::array<std::uint32_t, N>& corners, std::uint64_t verticesBefore) {
   out += 'f';
   for (const std::uint32_t v : corners) {
     char digits[24];
-    const auto end = std::to_chars(digits, digits + sizeof digits, std::uint64_t{v} + 1).ptr;  // OBJ counts from 1
+    const auto end = std::to_chars(digits, digits + sizeof digits, std::uint64_t{v} + verticesBefore + 1).ptr;  // OBJ counts from 1
     const std::string_view index(digits, static_cast<std::size_t>(end - digits));
     out += ' ';
     out += index;
@@ -133,18 +133,14 @@ std::optional<Quad> joinTriangles(const Triangle& first, const Triangle& second)
 
 }  // namespace
 
-void writeObj(const QuadMesh& mesh, bool triangles, std::ostream& stream, Up up) { writeObj(mesh, triangles, stream, up, {}); }
+namespace {
 
-void writeObj(const QuadMesh& mesh, bool triangles, std::ostream& stream, Up up, const std::string& mtlFile) {
-  exporting::requirePerVertex(mesh, mesh.normals.size(), "normals", "writeObj");
-  exporting::requirePerVertex(mesh, mesh.uvw.size(), "uvw", "writeObj");
-  exporting::requireQuadIndicesInRange(mesh, "writeObj");
-
+// v, vt, vn and f lines of `mesh` after `preamble`, faces numbered after `verticesBefore` vertices. Printing the
+// numbers is most of the work (a tree's OBJ is tens of megabytes): blocks of lines are printed on every core in
+// turn while this thread writes them out in file order.
+void writeSections(const QuadMesh& mesh, bool triangles, std::ostream& stream, Up up, std::uint64_t verticesBefore, const std::string& preamble) {
   const auto triangleList = triangles ? triangulate(mesh) : std::vector<Triangle>{};
   const std::size_t faceCount = triangles ? triangleList.size() : mesh.quads.size();
-
-  // Printing the numbers is most of the work (a tree's OBJ is tens of megabytes): blocks of lines are printed
-  // on every core in turn while this thread writes them out in file order (v, vt, vn, f).
   struct Block {
     int section;  // 0 v, 1 vt, 2 vn, 3 f
     std::size_t begin, end;
@@ -165,21 +161,14 @@ void writeObj(const QuadMesh& mesh, bool triangles, std::ostream& stream, Up up,
         const glm::vec3 q = axes(b.section == 0 ? mesh.positions[i] : mesh.normals[i]);
         appendLine(out, b.section == 0 ? "v" : "vn", {q.x, q.y, q.z});
       } else if (triangles) {
-        appendFace(out, triangleList[i]);
+        appendFace(out, triangleList[i], verticesBefore);
       } else {
-        appendFace(out, mesh.quads[i]);
+        appendFace(out, mesh.quads[i], verticesBefore);
       }
     }
     return out;
   };
-  const std::string header = std::string("# Arbor tree mesh: object space in metres, ") + (up == Up::Y ? "y up" : "z up") + "\n# " + std::to_string(mesh.vertexCount()) +
-                             " vertices, " + std::to_string(faceCount) + (triangles ? " triangles" : " quads") +
-                             "; vt is (u, v), the flip coordinate is not stored\n";
-  stream.write(header.data(), static_cast<std::streamsize>(header.size()));
-  if (!mtlFile.empty()) {
-    const std::string materials = "mtllib " + mtlFile + "\nusemtl bark\n";
-    stream.write(materials.data(), static_cast<std::streamsize>(materials.size()));
-  }
+  stream.write(preamble.data(), static_cast<std::streamsize>(preamble.size()));
 
   std::vector<std::string> text(blocks.size());
   std::vector<char> printed(blocks.size(), 0);
@@ -197,7 +186,7 @@ void writeObj(const QuadMesh& mesh, bool triangles, std::ostream& stream, Up up,
   };
   std::vector<std::thread> workers;
   const unsigned cores = std::clamp(std::thread::hardware_concurrency(), 1u, 8u);
-  for (unsigned w = 0; w < cores; ++w) workers.emplace_back(work);
+  for (unsigned w = 0; w < std::min<std::size_t>(cores, blocks.size()); ++w) workers.emplace_back(work);
   for (std::size_t i = 0; i < blocks.size(); ++i) {
     std::string out;
     {
@@ -210,6 +199,22 @@ void writeObj(const QuadMesh& mesh, bool triangles, std::ostream& stream, Up up,
   for (std::thread& t : workers) t.join();
 }
 
+}  // namespace
+
+void writeObj(const QuadMesh& mesh, bool triangles, std::ostream& stream, Up up) { writeObj(mesh, triangles, stream, up, {}); }
+
+void writeObj(const QuadMesh& mesh, bool triangles, std::ostream& stream, Up up, const std::string& mtlFile) {
+  exporting::requirePerVertex(mesh, mesh.normals.size(), "normals", "writeObj");
+  exporting::requirePerVertex(mesh, mesh.uvw.size(), "uvw", "writeObj");
+  exporting::requireQuadIndicesInRange(mesh, "writeObj");
+  const std::size_t faceCount = triangles ? 2 * mesh.quads.size() : mesh.quads.size();
+  std::string header = std::string("# Arbor tree mesh: object space in metres, ") + (up == Up::Y ? "y up" : "z up") + "\n# " +
+                       std::to_string(mesh.vertexCount()) + " vertices, " + std::to_string(faceCount) + (triangles ? " triangles" : " quads") +
+                       "; vt is (u, v), the flip coordinate is not stored\n";
+  if (!mtlFile.empty()) header += "mtllib " + mtlFile + "\nusemtl bark\n";
+  writeSections(mesh, triangles, stream, up, 0, header);
+}
+
 std::string writeObj(const QuadMesh& mesh, bool triangles, Up up) {
   std::ostringstream out;
   writeObj(mesh, triangles, out, up);
@@ -218,25 +223,15 @@ std::string writeObj(const QuadMesh& mesh, bool triangles, Up up) {
 
 void writeObjCards(const CardMesh& cards, const std::string& object, const std::string& material, std::size_t verticesBefore,
                    std::ostream& stream, Up up) {
-  const auto axes = [up](const glm::vec3& p) { return up == Up::Y ? glm::vec3(p.x, p.z, -p.y) : p; };
-  std::string out = "o " + object + "\n";
-  if (!material.empty()) out += "usemtl " + material + "\n";
-  for (const glm::vec3& p : cards.positions) {
-    const glm::vec3 q = axes(p);
-    appendLine(out, "v", {q.x, q.y, q.z});
-  }
-  // OBJ's v grows up the image, glTF's (and the cards') down it.
-  for (const glm::vec2& t : cards.texcoords) appendLine(out, "vt", {t.x, 1.0f - t.y});
-  for (const glm::vec3& n : cards.normals) {
-    const glm::vec3 q = axes(n);
-    appendLine(out, "vn", {q.x, q.y, q.z});
-  }
-  for (const auto& q : cards.quads) {
-    std::array<std::uint32_t, 4> corners{};
-    for (std::size_t k = 0; k < 4; ++k) corners[k] = static_cast<std::uint32_t>(q[k] + verticesBefore);
-    appendFace(out, corners);
-  }
-  stream.write(out.data(), static_cast<std::streamsize>(out.size()));
+  // The cards as a quad mesh of their own; OBJ's v grows up the image, glTF's (and the cards') down it.
+  QuadMesh mesh;
+  mesh.positions = cards.positions;
+  mesh.normals = cards.normals;
+  mesh.uvw.reserve(cards.texcoords.size());
+  for (const glm::vec2& t : cards.texcoords) mesh.uvw.emplace_back(t.x, 1.0f - t.y, 0.0f);
+  mesh.quads = cards.quads;
+  exporting::requireQuadIndicesInRange(mesh, "writeObjCards");
+  writeSections(mesh, false, stream, up, verticesBefore, "o " + object + "\n" + (material.empty() ? std::string() : "usemtl " + material + "\n"));
 }
 
 std::string writeMtl(const std::string& barkColor, const std::string& barkNormal, const std::string& leafAtlas) {

@@ -46,12 +46,13 @@ int runTextures(const TexturesOptions& o) {
   const Image leaves = makeLeafAtlas(o.size, o.seed);
   const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   const std::string colorPath = (dir / "bark_color.png").string(), heightPath = (dir / "bark_height.png").string();
-  const std::string leafPath = (dir / "leaf_atlas.png").string();
+  const std::string leafPath = (dir / "leaf_atlas.png").string(), normalPath = (dir / "bark_normal.png").string();
   writePng(colorPath, maps.color);
   writePng(heightPath, maps.height);
+  writePng(normalPath, maps.normal);
   writePng(leafPath, leaves);
-  std::printf("bark and leaves %d x %d, seed %u: generated in %.0f ms\nwrote %s\nwrote %s\nwrote %s\n", o.size, o.size,
-              o.seed, ms, colorPath.c_str(), heightPath.c_str(), leafPath.c_str());
+  std::printf("bark and leaves %d x %d, seed %u: generated in %.0f ms\nwrote %s\nwrote %s\nwrote %s\nwrote %s\n", o.size, o.size,
+              o.seed, ms, colorPath.c_str(), heightPath.c_str(), normalPath.c_str(), leafPath.c_str());
   return 0;
 }
 
@@ -62,7 +63,7 @@ void addTexturesCommand(CLI::App& app, Action& action) {
   CLI::App* cmd = app.add_subcommand("textures", "Write the procedural textures: bark colour and height maps (tileable) and the leaf atlas (PNG).");
   cmd->add_option("--size", o->size, "Width and height in pixels: a power of two from 64 to 4096")->capture_default_str();
   cmd->add_option("--seed", o->seed, "Random seed; the same size and seed give byte-identical files")->check(Whole(0, 4294967295LL))->capture_default_str();
-  cmd->add_option("--out", o->out, "Directory for bark_color.png, bark_height.png and leaf_atlas.png (created if missing)")->required();
+  cmd->add_option("--out", o->out, "Directory for bark_color.png, bark_height.png, bark_normal.png and leaf_atlas.png (created if missing)")->required();
   cmd->callback([o, &action] { action = [o] { return runTextures(*o); }; });
 }
 

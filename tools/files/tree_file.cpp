@@ -18,10 +18,6 @@ namespace arbor {
 
 namespace {
 
-// The bark's normal map: black to white in the height map is this many texels of relief (gentle, as the colour
-// map already darkens the fissures).
-constexpr double kBarkRelief = 6.0;
-
 std::string readBytes(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw std::runtime_error(path + ": cannot read the texture (is the assets folder complete?)");
@@ -54,7 +50,7 @@ AssetTextures exportTextures() {
   const std::string dir = assetDirectory() + "/textures/";
   AssetTextures textures;
   textures.barkColor = readBytes(dir + "bark_color.png");
-  textures.barkNormal = encodePng(normalMapFromHeight(readPng(dir + "bark_height.png"), kBarkRelief));
+  textures.barkNormal = readBytes(dir + "bark_normal.png");  // `arbor textures` makes it from the height map
   textures.leafAtlas = readBytes(dir + "leaf_atlas.png");
   return textures;
 }
