@@ -1,6 +1,7 @@
 // arbor render: a tree rendered offscreen with the tessellation pipelines, written as PNG, with the frame
 // time and the number of triangles the GPU generated.
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -126,7 +127,16 @@ int runRender(const RenderOptions& o) {
 
   std::vector<double> gpu, cpu;
   render::FrameResult last;
+  const auto started = std::chrono::steady_clock::now();
+  // The first frame also builds the control points: large trees take seconds before anything else is said.
+  if (!o.quiet && tree.mesh.quads.size() > 20000) {
+    std::fprintf(stderr, "arbor render: %zu quads, %d frame(s) at %ux%u on %s...\n", tree.mesh.quads.size(), o.frames, width, height,
+                 context.deviceDescription().c_str());
+  }
   for (int f = 0; f < o.frames; ++f) {
+    // A whole tessellated tree takes seconds a frame on a CPU device: once a second has passed, say where it is.
+    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    if (!o.quiet && elapsed > 1.0) std::fprintf(stderr, "arbor render: frame %d of %d (%.1f s so far)\n", f + 1, o.frames, elapsed);
     last = session.render(camera, settings);
     if (f > 0 || o.frames == 1) {  // the first of several frames warms caches up and is not counted
       gpu.push_back(last.gpu.gpuMilliseconds);
