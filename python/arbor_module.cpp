@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cerrno>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <optional>
@@ -360,7 +361,7 @@ it, w the flip coordinate); radius (V,) float32; level (V,) uint8; quads (Q, 4) 
            "8); subdivide: Catmull-Clark levels by OpenSubdiv (0 to 6, quads times 4 each), positions on the limit "
            "surface.")
       .def("export", [](const Tree& t, const py::object& pathObject, int levels, int subdivisions, const std::string& up, bool leaves,
-                        bool cards, bool textures, int lods) {
+                        bool cards, bool textures, int lods, double wind, double windAzimuth, double gustFrequency, int windFrames) {
             const std::string path = pathArgument(pathObject, "Tree.export");
             if (isSkeletonFile(path)) {
               if (levels != 0 || subdivisions != 0 || up != "y" || lods != 1) {
@@ -374,6 +375,12 @@ it, w the flip coordinate); radius (V,) float32; level (V,) uint8; quads (Q, 4) 
             requireRange("Tree.export", "subdivide", subdivisions, 0, kMaxSubdivide, "the control mesh");
             requireRange("Tree.export", "lods", lods, 1, kMaxLevels, "the finest only");
             if (lods > 1 && endsWith(path, ".obj")) throw InputError(path, "lods", "an OBJ holds one level of detail; levels of detail need .gltf or .glb");
+            if (!(wind >= 0.0 && wind <= 4.0)) throw InputError("Tree.export", "wind", "is " + std::to_string(wind) + "; allowed 0 (none) to 4");
+            if (!(gustFrequency >= 0.02 && gustFrequency <= 4.0))
+              throw InputError("Tree.export", "gust_frequency", "is " + std::to_string(gustFrequency) + "; allowed 0.02 to 4 gusts per second");
+            if (!std::isfinite(windAzimuth)) throw InputError("Tree.export", "wind_azimuth", "must be a finite number of degrees");
+            requireRange("Tree.export", "wind_frames", windFrames, 4, 120, "the fewest keyframes");
+            if (wind > 0.0 && endsWith(path, ".obj")) throw InputError(path, "wind", "an OBJ cannot hold an animation; the wind animation needs .gltf or .glb");
             TreeFileOptions options = defaultTreeFileOptions();
             options.file = MeshFileOptions{false, axis};
             options.asset.mesh.levels = levels;
@@ -382,13 +389,19 @@ it, w the flip coordinate); radius (V,) float32; level (V,) uint8; quads (Q, 4) 
             options.asset.leaves = leaves;
             options.asset.branchCards = cards;
             options.textures = textures;
+            options.asset.wind.strength = wind;
+            options.asset.wind.azimuth = windAzimuth;
+            options.asset.wind.gustFrequency = gustFrequency;
+            options.asset.windFrames = windFrames;
             writeFile([&] { writeTreeFile(path, t.skeleton, t.name, options, nullptr, {}, "path"); });
           },
           py::arg("path"), py::arg("levels") = 0, py::arg("subdivide") = 0, py::arg("up") = "y", py::kw_only(), py::arg("leaves") = true,
-          py::arg("cards") = true, py::arg("textures") = true, py::arg("lods") = 1,
+          py::arg("cards") = true, py::arg("textures") = true, py::arg("lods") = 1, py::arg("wind") = 0.0, py::arg("wind_azimuth") = 0.0,
+          py::arg("gust_frequency") = 0.25, py::arg("wind_frames") = 24,
           "Writes the tree as the file `path` names, as `arbor generate` does (docs/export.md): .obj (quads; `up` 'y' as "
           "Blender imports OBJ, or 'z'; a .mtl and PNG textures beside it), .gltf or .glb (triangles, y up, textures "
-          "inside, `lods` levels of detail by MSFT_lod); the bark meshed as mesh(levels, subdivide), with leaf cards "
+          "inside, `lods` levels of detail by MSFT_lod; `wind` > 0: a looping wind animation of `wind_frames` morph "
+          "targets, docs/wind.md); the bark meshed as mesh(levels, subdivide), with leaf cards "
           "(`leaves`), fake-branch cards for stem levels not meshed (`cards`) and textures (`textures`); or .json, the "
           "skeleton (arbor-skeleton/1, which grow() reads back as the same tree). Written whole or not at all.")
       .def("__repr__", [](const Tree& t) {

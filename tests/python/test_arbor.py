@@ -242,3 +242,18 @@ def test_bad_sources_and_arguments(tmp_path, small_tree):
     with pytest.raises(OSError, match="cannot be written"):
         small_tree.export(str(tmp_path / "no" / "such" / "folder.obj"))
     assert not (tmp_path / "tree.stl").exists() and not (tmp_path / "tree.glb").exists()
+
+
+def test_export_wind_animation(small_tree, tmp_path):
+    glb = tmp_path / "windy.glb"
+    small_tree.export(glb, wind=1.0, wind_frames=6, textures=False)
+    data = glb.read_bytes()
+    chunk_length, _ = struct.unpack_from("<II", data, 12)
+    document = json.loads(data[20 : 20 + chunk_length])
+    assert document["animations"][0]["name"] == "wind"
+    for primitive in document["meshes"][0]["primitives"]:
+        assert len(primitive["targets"]) == 6
+    with pytest.raises(arbor.InputError, match="wind"):
+        small_tree.export(str(tmp_path / "x.obj"), wind=1.0)
+    with pytest.raises(arbor.InputError, match="wind_frames"):
+        small_tree.export(str(tmp_path / "x.glb"), wind=1.0, wind_frames=2)
