@@ -48,8 +48,8 @@
 // half angle; > 1 when the cone is too wide to cull anything).
 #define ARBOR_HULL_VEC4S 3
 
-// Wind records: two vec4 per point (reach on branch levels 1, 2, 3+; their stems' phases, w: a leaf's flutter
-// phase): the mesh's vertices, then the leaves (in the leaf buffer's order), then two per fake-branch segment.
+// Wind records: two vec4 per point (reach on branch levels 1, 2, 3+, w: the tree's phase in the gusts; their
+// stems' phases, w: a leaf's flutter phase): the mesh's vertices, then the leaves (in the leaf buffer's order), then two per fake-branch segment.
 #define ARBOR_WIND_VEC4S 2
 // Tessellation buckets: bucket b holds the patches whose largest factor is in (2^(b-1), 2^b], so that each
 // draw can be sized for the vertices its own patches make. Bucket 0 (every factor 1) is drawn without the

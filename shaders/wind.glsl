@@ -4,12 +4,13 @@
 // Radians into the gust period at this frame.
 float windAngle() { return 2.0 * PI * scene.wind.w * scene.windClock.x; }
 
+// reach.w: the tree's phase in the gusts (the same in all its records).
 vec3 windOffset(vec3 rest, vec4 reach, vec4 phase, float treeHeight) {
   if (scene.wind.z <= 0.0 || treeHeight <= 0.0) return vec3(0.0);
   const float kSway[3] = float[3](0.10, 0.16, 0.24);
   const float kHarmonic[3] = float[3](3.0, 5.0, 7.0);
   vec3 along = vec3(scene.wind.xy, 0.0), side = vec3(-scene.wind.y, scene.wind.x, 0.0), up = vec3(0.0, 0.0, 1.0);
-  float w = windAngle();
+  float w = windAngle() + reach.w;
   float gust = 0.65 + 0.25 * sin(w) + 0.10 * sin(2.0 * w + 1.3);
   // The trunk bends as a cantilever and keeps each point's distance from the base.
   float z = max(rest.z, 0.0);

@@ -718,7 +718,7 @@ TEST_CASE("wind animation: every part has one morph target per keyframe, one loo
   const auto pose = accessorFloats(doc, glb.binary, doc["meshes"][0]["primitives"][0]["targets"][0]["POSITION"], 3);
   double worst = 0.0, largest = 0.0;
   for (std::size_t v = 0; v < cage.mesh.vertexCount(); ++v) {
-    const glm::vec3 d = windOffset(cage.mesh.positions[v], points[v], options.wind, windHeight(skeleton), 0.0);
+    const glm::vec3 d = windOffset(cage.mesh.positions[v], points[v], options.wind, windHeight(skeleton), windPhase(skeleton), 0.0);
     const glm::vec3 stored(pose[3 * v], -pose[3 * v + 2], pose[3 * v + 1]);  // glTF's y up back to z up
     worst = std::max(worst, static_cast<double>(glm::distance(d, stored)));
     largest = std::max(largest, static_cast<double>(glm::length(d)));

@@ -325,7 +325,7 @@ TEST_CASE("with wind the control points are the CPU wind model's posed cage refi
   std::vector<glm::dvec3> posed(mesh.vertexCount());
   double largest = 0.0;
   for (std::size_t v = 0; v < posed.size(); ++v) {
-    const glm::vec3 offset = windOffset(mesh.positions[v], geometry.wind.mesh[v], settings.wind, geometry.wind.height, settings.windSeconds);
+    const glm::vec3 offset = windOffset(mesh.positions[v], geometry.wind.mesh[v], settings.wind, geometry.wind.height, geometry.wind.phase, settings.windSeconds);
     posed[v] = glm::dvec3(mesh.positions[v]) + glm::dvec3(offset);
     largest = std::max(largest, static_cast<double>(glm::length(offset)));
   }

@@ -65,21 +65,21 @@ TEST_CASE("wind: the motion loops with the gust period, still air and the base s
   for (std::size_t v = 0; v < points.size(); v += 7) {
     const glm::vec3 p = tree.mesh.positions[v];
     for (const double t : {0.3, 1.7, 4.1}) {
-      const glm::vec3 a = windOffset(p, points[v], wind, height, t), b = windOffset(p, points[v], wind, height, t + wind.period());
+      const glm::vec3 a = windOffset(p, points[v], wind, height, 0.7, t), b = windOffset(p, points[v], wind, height, 0.7, t + wind.period());
       worstLoop = std::max(worstLoop, static_cast<double>(glm::distance(a, b)));
       moved = std::max(moved, static_cast<double>(glm::length(a)));
     }
     WindSettings still = wind;
     still.strength = 0.0;
-    CHECK(glm::length(windOffset(p, points[v], still, height, 1.0)) == 0.0f);
+    CHECK(glm::length(windOffset(p, points[v], still, height, 0.7, 1.0)) == 0.0f);
   }
   CHECK(worstLoop < 1e-4);
   CHECK(moved > 0.01 * height);
   // The trunk's base does not move; its top bends along the wind by about 4 % of the height in a full gust.
-  CHECK(glm::length(windOffset(glm::vec3(0.1f, 0.0f, 0.0f), WindPoint{}, wind, height, 1.0)) == 0.0f);
+  CHECK(glm::length(windOffset(glm::vec3(0.1f, 0.0f, 0.0f), WindPoint{}, wind, height, 0.7, 1.0)) == 0.0f);
   double top = 0.0;
   const glm::vec3 along(std::cos(glm::radians(30.0f)), std::sin(glm::radians(30.0f)), 0.0f);
-  for (int k = 0; k < 100; ++k) top = std::max(top, static_cast<double>(glm::dot(windOffset(glm::vec3(0, 0, float(height)), WindPoint{}, wind, height, k * 0.05), along)));
+  for (int k = 0; k < 100; ++k) top = std::max(top, static_cast<double>(glm::dot(windOffset(glm::vec3(0, 0, float(height)), WindPoint{}, wind, height, 0.0, k * 0.05), along)));
   CHECK(top > 0.033 * height);
   CHECK(top <= 0.04 * height + 1e-6);
 }

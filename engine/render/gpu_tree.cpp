@@ -115,8 +115,8 @@ GpuTree uploadTree(const vk::VulkanContext& context, const QuadMesh& mesh, const
       wind->segmentEnds.size() == 2 * segments) {
     std::vector<glm::vec4> windRecords;
     windRecords.reserve(ARBOR_WIND_VEC4S * (mesh.vertexCount() + leaves.size() + 2 * segments));
-    auto add = [&windRecords](const WindPoint& p, float flutterPhase) {
-      windRecords.emplace_back(p.reach[0], p.reach[1], p.reach[2], 0.0f);
+    auto add = [&windRecords, wind](const WindPoint& p, float flutterPhase) {
+      windRecords.emplace_back(p.reach[0], p.reach[1], p.reach[2], static_cast<float>(wind->phase));
       windRecords.emplace_back(p.phase[0], p.phase[1], p.phase[2], flutterPhase);
     };
     for (const WindPoint& p : wind->mesh) add(p, 0.0f);

@@ -105,7 +105,7 @@ std::vector<std::vector<glm::vec3>> barkPoses(const Skeleton& skeleton, const Tr
   for (int frame = 0; frame < options.windFrames; ++frame) {
     const double t = keyframeTime(options, frame);
     QuadMesh posed = cage.mesh;
-    for (std::size_t v = 0; v < posed.vertexCount(); ++v) posed.positions[v] += windOffset(cage.mesh.positions[v], points[v], options.wind, height, t);
+    for (std::size_t v = 0; v < posed.vertexCount(); ++v) posed.positions[v] += windOffset(cage.mesh.positions[v], points[v], options.wind, height, windPhase(skeleton), t);
     if (options.subdivide > 0) posed = subdivide(posed, options.subdivide, options.mesh.maxQuads);
     std::vector<glm::vec3> offsets(bark.vertexCount());
     for (std::size_t v = 0; v < offsets.size(); ++v) offsets[v] = posed.positions[v] - bark.positions[v];
@@ -123,8 +123,8 @@ std::vector<std::vector<glm::vec3>> branchCardPoses(const Skeleton& skeleton, co
     std::vector<glm::vec3> offsets;
     for (const ImpostorSegment& s : segments) {
       if (!hasCards(s)) continue;
-      const glm::vec3 lo = windOffset(glm::vec3(s.from), nodeWindPoint(skeleton, s.fromNode), options.wind, height, t);
-      const glm::vec3 hi = windOffset(glm::vec3(s.to), nodeWindPoint(skeleton, s.toNode), options.wind, height, t);
+      const glm::vec3 lo = windOffset(glm::vec3(s.from), nodeWindPoint(skeleton, s.fromNode), options.wind, height, windPhase(skeleton), t);
+      const glm::vec3 hi = windOffset(glm::vec3(s.to), nodeWindPoint(skeleton, s.toNode), options.wind, height, windPhase(skeleton), t);
       for (int card = 0; card < 2; ++card) offsets.insert(offsets.end(), {lo, lo, hi, hi});
     }
     poses.push_back(std::move(offsets));
@@ -141,7 +141,7 @@ std::vector<std::vector<glm::vec3>> leafPoses(const Skeleton& skeleton, const Tr
     std::vector<glm::vec3> offsets;
     offsets.reserve(4 * skeleton.leaves.size());
     for (std::size_t i = 0; i < skeleton.leaves.size(); ++i) {
-      const glm::vec3 base = windOffset(glm::vec3(skeleton.leaves[i].position), points[i], options.wind, height, t);
+      const glm::vec3 base = windOffset(glm::vec3(skeleton.leaves[i].position), points[i], options.wind, height, windPhase(skeleton), t);
       offsets.insert(offsets.end(), {base, base, base, base});
     }
     poses.push_back(std::move(offsets));

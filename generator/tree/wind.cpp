@@ -114,11 +114,18 @@ double windHeight(const Skeleton& skeleton) {
   return top;
 }
 
-glm::vec3 windOffset(const glm::vec3& rest, const WindPoint& point, const WindSettings& wind, double treeHeight, double seconds) {
+double windPhase(const Skeleton& skeleton) {
+  std::uint64_t key = 0xcbf29ce484222325ull;  // FNV-1a of the species name, then the seed: stable everywhere
+  for (const char c : skeleton.species) key = (key ^ static_cast<unsigned char>(c)) * 0x100000001b3ull;
+  return phaseOf(key ^ skeleton.seed);
+}
+
+glm::vec3 windOffset(const glm::vec3& rest, const WindPoint& point, const WindSettings& wind, double treeHeight, double treePhase,
+                     double seconds) {
   if (!wind.on() || !(treeHeight > 0.0)) return glm::vec3(0.0f);
   const double azimuth = wind.azimuth * std::numbers::pi / 180.0;
   const glm::dvec3 along(std::cos(azimuth), std::sin(azimuth), 0.0), side(-std::sin(azimuth), std::cos(azimuth), 0.0), up(0, 0, 1);
-  const double w = 2.0 * std::numbers::pi * wind.gustFrequency * seconds;
+  const double w = 2.0 * std::numbers::pi * wind.gustFrequency * seconds + treePhase;
   const double gust = 0.65 + 0.25 * std::sin(w) + 0.10 * std::sin(2.0 * w + 1.3);
   // The trunk: bent along the wind as a cantilever, the top most; lowered so points keep their distance.
   const double z = std::max(static_cast<double>(rest.z), 0.0);
@@ -148,6 +155,7 @@ TreeWind treeWind(const Skeleton& skeleton, const TreeMesh& mesh, const std::vec
                   const std::vector<ImpostorSegment>& sketch) {
   TreeWind wind;
   wind.height = windHeight(skeleton);
+  wind.phase = windPhase(skeleton);
   wind.mesh = meshWindPoints(skeleton, mesh);
   wind.leaves = leafWindPoints(skeleton);
   for (const auto* list : {&impostors, &sketch}) {

@@ -43,9 +43,14 @@ std::vector<WindPoint> leafWindPoints(const Skeleton& skeleton);
 
 // The tree's height (for the trunk's bend): the highest node above the base.
 double windHeight(const Skeleton& skeleton);
+// The tree's own phase in the gusts (radians, from its species and seed), so that a forest's trees do not all
+// bend at once.
+double windPhase(const Skeleton& skeleton);
 
-// How far `rest` moves at time `seconds`.
-glm::vec3 windOffset(const glm::vec3& rest, const WindPoint& point, const WindSettings& wind, double treeHeight, double seconds);
+// How far `rest` moves at time `seconds` on a tree `treeHeight` high whose motion runs `treePhase` radians
+// ahead in the gust period.
+glm::vec3 windOffset(const glm::vec3& rest, const WindPoint& point, const WindSettings& wind, double treeHeight, double treePhase,
+                     double seconds);
 
 // A leaf's flutter: the tip's displacement along the blade's normal, in blade lengths, for leaf `index` (its
 // phase: leafFlutterPhase).
@@ -56,6 +61,7 @@ float leafFlutterPhase(std::uint32_t index);
 // fake-branch segment ends (from, to for each segment of `impostors`, then of `sketch`), and its height.
 struct TreeWind {
   double height = 0.0;
+  double phase = 0.0;  // windPhase
   std::vector<WindPoint> mesh, leaves, segmentEnds;
   bool empty() const { return mesh.empty() && leaves.empty() && segmentEnds.empty(); }
 };
