@@ -101,11 +101,12 @@ double keyframeTime(const TreeAssetOptions& options, int frame) { return options
 std::vector<std::vector<glm::vec3>> barkPoses(const Skeleton& skeleton, const TreeMesh& cage, const QuadMesh& bark,
                                               const TreeAssetOptions& options, double height) {
   const std::vector<WindPoint> points = meshWindPoints(skeleton, cage);
+  const double phase = windPhase(skeleton);
   std::vector<std::vector<glm::vec3>> poses;
   for (int frame = 0; frame < options.windFrames; ++frame) {
     const double t = keyframeTime(options, frame);
     QuadMesh posed = cage.mesh;
-    for (std::size_t v = 0; v < posed.vertexCount(); ++v) posed.positions[v] += windOffset(cage.mesh.positions[v], points[v], options.wind, height, windPhase(skeleton), t);
+    for (std::size_t v = 0; v < posed.vertexCount(); ++v) posed.positions[v] += windOffset(cage.mesh.positions[v], points[v], options.wind, height, phase, t);
     if (options.subdivide > 0) posed = subdivide(posed, options.subdivide, options.mesh.maxQuads);
     std::vector<glm::vec3> offsets(bark.vertexCount());
     for (std::size_t v = 0; v < offsets.size(); ++v) offsets[v] = posed.positions[v] - bark.positions[v];
@@ -117,14 +118,15 @@ std::vector<std::vector<glm::vec3>> barkPoses(const Skeleton& skeleton, const Tr
 // Branch cards move with the nodes at their ends (the layout of branchCards: two cards, eight corners, per segment).
 std::vector<std::vector<glm::vec3>> branchCardPoses(const Skeleton& skeleton, const std::vector<ImpostorSegment>& segments,
                                                     const TreeAssetOptions& options, double height) {
+  const double phase = windPhase(skeleton);
   std::vector<std::vector<glm::vec3>> poses;
   for (int frame = 0; frame < options.windFrames; ++frame) {
     const double t = keyframeTime(options, frame);
     std::vector<glm::vec3> offsets;
     for (const ImpostorSegment& s : segments) {
       if (!hasCards(s)) continue;
-      const glm::vec3 lo = windOffset(glm::vec3(s.from), nodeWindPoint(skeleton, s.fromNode), options.wind, height, windPhase(skeleton), t);
-      const glm::vec3 hi = windOffset(glm::vec3(s.to), nodeWindPoint(skeleton, s.toNode), options.wind, height, windPhase(skeleton), t);
+      const glm::vec3 lo = windOffset(glm::vec3(s.from), nodeWindPoint(skeleton, s.fromNode), options.wind, height, phase, t);
+      const glm::vec3 hi = windOffset(glm::vec3(s.to), nodeWindPoint(skeleton, s.toNode), options.wind, height, phase, t);
       for (int card = 0; card < 2; ++card) offsets.insert(offsets.end(), {lo, lo, hi, hi});
     }
     poses.push_back(std::move(offsets));
@@ -135,13 +137,14 @@ std::vector<std::vector<glm::vec3>> branchCardPoses(const Skeleton& skeleton, co
 // Leaves move with the node they hang from (four corners per leaf, in leafCards' order).
 std::vector<std::vector<glm::vec3>> leafPoses(const Skeleton& skeleton, const TreeAssetOptions& options, double height) {
   const std::vector<WindPoint> points = leafWindPoints(skeleton);
+  const double phase = windPhase(skeleton);
   std::vector<std::vector<glm::vec3>> poses;
   for (int frame = 0; frame < options.windFrames; ++frame) {
     const double t = keyframeTime(options, frame);
     std::vector<glm::vec3> offsets;
     offsets.reserve(4 * skeleton.leaves.size());
     for (std::size_t i = 0; i < skeleton.leaves.size(); ++i) {
-      const glm::vec3 base = windOffset(glm::vec3(skeleton.leaves[i].position), points[i], options.wind, height, windPhase(skeleton), t);
+      const glm::vec3 base = windOffset(glm::vec3(skeleton.leaves[i].position), points[i], options.wind, height, phase, t);
       offsets.insert(offsets.end(), {base, base, base, base});
     }
     poses.push_back(std::move(offsets));
