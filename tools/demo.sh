@@ -25,11 +25,14 @@ mkdir -p "$out"
 "$arbor" render ca-black-oak --seed 1 --levels 2 --impostor-levels 1 --mode acc --adaptive 6 --msaa 4 --size 960x1200 \
   --leaves --shadow-leaves 250 --light 25,40 --out "$out/ca-black-oak-fake-branches.png"
 "$arbor" render palm --mode acc --adaptive 6 --msaa 4 --size 960x1200 --leaves --out "$out/palm.png"
+# The aspen in a strong wind: the control cage posed before tessellation, leaves following (docs/wind.md).
+"$arbor" render quaking-aspen --seed 1 --mode acc --adaptive 6 --msaa 4 --size 960x1200 --leaves --wind 2 --wind-time 1 \
+  --out "$out/quaking-aspen-wind.png"
 # Other growth models through the same mesh: ABOP's 3D bush (an L-system) and its 2D weed as a drawing.
 "$arbor" render fig-1-25 --mode acc --adaptive 6 --msaa 4 --size 960x960 --leaves --out "$out/lsystem-bush.png"
 "$arbor" lsystem fig-1-24c --out "$out/lsystem-fig-1-24c.svg"
 echo "demo: walkthrough frames (when there was no display) in $out/view/"
 echo "demo: skeleton $out/black-tupelo.json, mesh $out/black-tupelo.glb"
 echo "demo: pictures $out/black-tupelo.png, $out/black-tupelo-bark.png, $out/black-tupelo-wireframe.png,"
-echo "      $out/quaking-aspen-backlit.png, $out/ca-black-oak-fake-branches.png, $out/palm.png,"
+echo "      $out/quaking-aspen-backlit.png, $out/quaking-aspen-wind.png, $out/ca-black-oak-fake-branches.png, $out/palm.png,"
 echo "      $out/lsystem-bush.png (an L-system), $out/lsystem-fig-1-24c.svg (its 2D drawing)"
