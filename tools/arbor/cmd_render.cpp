@@ -18,6 +18,7 @@
 #include "mesh/impostor_segments.hpp"
 #include "mesh/tree_mesh.hpp"
 #include "render/render_session.hpp"
+#include "export_options.hpp"
 #include "render_options.hpp"
 
 namespace arbor::cli {
@@ -212,13 +213,7 @@ void addRenderCommand(CLI::App& app, Action& action) {
   cmd->add_option("--impostor-levels", o->impostorLevels, "Levels beyond the mesh drawn as fake branches; they carry the leaves (implies --impostors; default 1)")
       ->check(Whole(1, 3));
   cmd->add_option("--light", o->light, "Sun direction as AZIMUTH,ELEVATION in degrees (azimuth 0: from -y, the default camera's side)");
-  cmd->add_option("--wind", o->wind.strength, "Wind strength (docs/wind.md): 0 still, 1 a strong breeze; the control cage is posed before tessellation")
-      ->check(Number(0.0, 4.0))
-      ->capture_default_str();
-  cmd->add_option("--wind-azimuth", o->wind.azimuth, "Where the wind blows towards, degrees from +x counter-clockwise")
-      ->check(Number(-360.0, 360.0))
-      ->capture_default_str();
-  cmd->add_option("--gust-frequency", o->wind.gustFrequency, "Gusts per second")->check(Number(0.02, 4.0))->capture_default_str();
+  addWindOptions(cmd, o->wind, "the control cage is posed before tessellation");
   cmd->add_option("--wind-time", o->windTime, "The moment shown, in seconds")->check(Number(0.0, 1e6))->capture_default_str();
   cmd->add_option("--out", o->out, "Output PNG")->required();
   cmd->add_flag("--quiet", o->quiet, "Print nothing on success");

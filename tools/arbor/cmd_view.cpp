@@ -16,6 +16,7 @@
 #include "growth_scene.hpp"
 #include "common/text_util.hpp"
 #include "render_options.hpp"
+#include "export_options.hpp"
 #include "files/tree_file.hpp"
 #include "view_script.hpp"
 #include "viewer.hpp"
@@ -164,13 +165,7 @@ void addViewCommand(CLI::App& app, Action& action) {
   cmd->add_option("--leaf-lod", o->leafLod, "All leaves up to this distance (m), then thinning (0: all)")->check(Number(0.0, 10000.0))->capture_default_str();
   cmd->add_option("--shadow-leaves", o->shadowLeaves, "Leaf self-shadowing against this many leaves")->check(Whole(0, 4096))->capture_default_str();
   cmd->add_option("--detail", o->detail, "FULL,REDUCED[,FAR] metres: whole mesh within FULL, deepest level faked within REDUCED, two beyond; beyond FAR trees drawn without the tessellator, their fake branches as a sketch (default 40,150,400; lavapipe 0,15,60)");
-  cmd->add_option("--wind", o->wind.strength, "Wind strength (docs/wind.md): 0 still, 1 a strong breeze; also on the panel")
-      ->check(Number(0.0, 4.0))
-      ->capture_default_str();
-  cmd->add_option("--wind-azimuth", o->wind.azimuth, "Where the wind blows towards, degrees from +x counter-clockwise")
-      ->check(Number(-360.0, 360.0))
-      ->capture_default_str();
-  cmd->add_option("--gust-frequency", o->wind.gustFrequency, "Gusts per second")->check(Number(0.02, 4.0))->capture_default_str();
+  addWindOptions(cmd, o->wind, "the trees sway; also on the panel");
   cmd->add_option("--light", o->light, "Sun direction AZIMUTH,ELEVATION in degrees")->capture_default_str();
   cmd->add_option("--camera-path", o->cameraPath, "Scripted: cameras ex,ey,ez,tx,ty,tz[,fov], one per line, visited over --frames");
   cmd->add_option("--frames", o->frames, "Scripted: render this many frames, then exit (default with a path: 60)")->check(Whole(1, 100000));

@@ -6,6 +6,18 @@
 
 namespace arbor::cli {
 
+void addWindOptions(CLI::App* cmd, WindSettings& wind, const std::string& effect) {
+  cmd->add_option("--wind", wind.strength, "Wind strength (docs/wind.md): 0 still, 1 a strong breeze; " + effect)
+      ->check(Number(0.0, 4.0))
+      ->capture_default_str();
+  cmd->add_option("--wind-azimuth", wind.azimuth, "Where the wind blows towards, degrees from +x counter-clockwise (Arbor's axes)")
+      ->check(Number(-360.0, 360.0))
+      ->capture_default_str();
+  cmd->add_option("--gust-frequency", wind.gustFrequency, "Gusts per second; every motion repeats after one gust period")
+      ->check(Number(0.02, 4.0))
+      ->capture_default_str();
+}
+
 void addExportOptions(CLI::App* cmd, ExportChoices& c) {
   cmd->add_option("--lods", c.lods,
                   "Levels of detail in a .gltf/.glb: the finest node names the coarser ones by MSFT_lod, each fakes one more stem "
@@ -16,17 +28,7 @@ void addExportOptions(CLI::App* cmd, ExportChoices& c) {
   cmd->add_flag("--no-textures", c.noTextures,
                 "No textures: glTF materials get flat colours; OBJ gets no .mtl and no PNG files beside it");
   cmd->add_flag("--triangles", c.triangles, "Write triangles instead of quads to .obj");
-  cmd->add_option("--wind", c.wind.strength,
-                  "Export a wind animation (glTF/GLB: morph targets, one loop of gusts; docs/wind.md) of this strength: 0 "
-                  "none, 1 a strong breeze")
-      ->check(Number(0.0, 4.0))
-      ->capture_default_str();
-  cmd->add_option("--wind-azimuth", c.wind.azimuth, "Where the wind blows towards, degrees from +x counter-clockwise (Arbor's axes)")
-      ->check(Number(-360.0, 360.0))
-      ->capture_default_str();
-  cmd->add_option("--gust-frequency", c.wind.gustFrequency, "Gusts per second; the animation loops after one gust period")
-      ->check(Number(0.02, 4.0))
-      ->capture_default_str();
+  addWindOptions(cmd, c.wind, "above 0, a .gltf/.glb holds a wind animation (morph targets, one loop of gusts)");
   cmd->add_option("--wind-frames", c.windFrames, "Keyframes (morph targets) per loop")->check(Whole(4, 120))->capture_default_str();
   cmd->add_option("--up", c.up, "The .obj's up axis: y (as Blender and most tools import OBJ) or z (Arbor's own axes)")
       ->check(CLI::IsMember({"y", "z"}))
@@ -34,7 +36,7 @@ void addExportOptions(CLI::App* cmd, ExportChoices& c) {
 }
 
 TreeFileOptions treeFileOptions(const std::string& path, const ExportChoices& c, const MeshOptions& mesh, int subdivide) {
-  TreeFileOptions options = defaultTreeFileOptions();
+  TreeFileOptions options;
   const bool obj = endsWith(path, ".obj");
   if (c.up != "y" && !obj) {
     throw InputError(path, "--up", "applies to .obj only (glTF is y up by its specification; the skeleton keeps Arbor's z up)");

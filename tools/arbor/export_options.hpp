@@ -19,10 +19,14 @@ struct ExportChoices {
   int windFrames = 24;
 };
 
+// --wind, --wind-azimuth and --gust-frequency (generate, mesh, grow, render, view); `effect` says what the
+// wind does in this command.
+void addWindOptions(CLI::App* cmd, WindSettings& wind, const std::string& effect);
+
 // --lods, --no-leaves, --no-cards, --no-textures, --triangles, --up and the wind animation's options.
 void addExportOptions(CLI::App* cmd, ExportChoices& choices);
 
-// The options for `path` from those choices: defaultTreeFileOptions with the user's changes. Throws InputError
+// The options for `path` from those choices: the defaults (TreeFileOptions{}) with the user's changes. Throws InputError
 // naming the option when one does not apply to that file type (--lods above 1 or --triangles on glTF, --up
 // on glTF). `mesh` and `subdivide` go to every level of detail.
 TreeFileOptions treeFileOptions(const std::string& path, const ExportChoices& choices, const MeshOptions& mesh = {}, int subdivide = 0);
