@@ -381,7 +381,7 @@ it, w the flip coordinate); radius (V,) float32; level (V,) uint8; quads (Q, 4) 
             if (!std::isfinite(windAzimuth)) throw InputError("Tree.export", "wind_azimuth", "must be a finite number of degrees");
             requireRange("Tree.export", "wind_frames", windFrames, 4, 120, "the fewest keyframes");
             if (wind > 0.0 && endsWith(path, ".obj")) throw InputError(path, "wind", "an OBJ cannot hold an animation; the wind animation needs .gltf or .glb");
-            TreeFileOptions options = defaultTreeFileOptions();
+            TreeFileOptions options;
             options.file = MeshFileOptions{false, axis};
             options.asset.mesh.levels = levels;
             options.asset.subdivide = subdivisions;

@@ -1,9 +1,6 @@
 #include "tree_file.hpp"
 
 #include <filesystem>
-#include <fstream>
-#include <iterator>
-#include <stdexcept>
 
 #include "asset_folder.hpp"
 #include "common/atomic_file.hpp"
@@ -11,18 +8,10 @@
 #include "common/text_util.hpp"
 #include "export/gltf_export.hpp"
 #include "export/obj_export.hpp"
-#include "image/bark_texture.hpp"
-#include "image/png_io.hpp"
 
 namespace arbor {
 
 namespace {
-
-std::string readBytes(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error(path + ": cannot read the texture (is the assets folder complete?)");
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
 
 void requireMeshFile(const std::string& path, const std::string& field) {
   if (!isMeshFile(path)) throw InputError(path, field, "a mesh is written as .obj, .gltf or .glb");
@@ -40,18 +29,12 @@ void writeMeshFile(const std::string& path, const QuadMesh& mesh, const std::str
   else writeFileAtomically(path, writeGlb(mesh, name));
 }
 
-TreeFileOptions defaultTreeFileOptions() {
-  TreeFileOptions options;
-  options.asset.lods = 1;  // Blender imports every node of a glTF, coarser levels of detail on top of the finest
-  return options;
-}
-
 AssetTextures exportTextures() {
   const std::string dir = assetDirectory() + "/textures/";
   AssetTextures textures;
-  textures.barkColor = readBytes(dir + "bark_color.png");
-  textures.barkNormal = readBytes(dir + "bark_normal.png");  // `arbor textures` makes it from the height map
-  textures.leafAtlas = readBytes(dir + "leaf_atlas.png");
+  textures.barkColor = readFile(dir + "bark_color.png");
+  textures.barkNormal = readFile(dir + "bark_normal.png");  // `arbor textures` makes it from the height map
+  textures.leafAtlas = readFile(dir + "leaf_atlas.png");
   return textures;
 }
 

@@ -27,12 +27,11 @@ void writeMeshFile(const std::string& path, const QuadMesh& mesh, const std::str
 
 struct TreeFileOptions {
   MeshFileOptions file;
-  TreeAssetOptions asset;  // asset.lods: levels of detail in a glTF/GLB (an OBJ holds the finest only)
+  // asset.lods: levels of detail in a glTF/GLB, one by default (Blender imports every node, the coarser ones
+  // on top of the finest); an OBJ holds the finest only. Leaves and cards on by default.
+  TreeAssetOptions asset;
   bool textures = true;    // bark colour, bark normal map and leaf atlas from the assets' textures
 };
-
-// The export defaults: one level of detail; leaves, cards and textures on.
-TreeFileOptions defaultTreeFileOptions();
 
 // The bark colour, a normal map made from the bark height and the leaf atlas, as PNG bytes, from assets/textures.
 AssetTextures exportTextures();

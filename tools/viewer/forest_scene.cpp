@@ -45,7 +45,7 @@ void ForestScene::exportMesh(const std::string& path) {
   GrowthOptions growth;
   growth.seed = request_.seed;
   const Skeleton skeleton = request_.sources.front().grow(growth);
-  writeTreeFile(path, skeleton, request_.labels.front(), defaultTreeFileOptions());
+  writeTreeFile(path, skeleton, request_.labels.front(), TreeFileOptions{});
   std::printf("wrote %s (%s, seed %llu)\n", path.c_str(), request_.labels.front().c_str(), static_cast<unsigned long long>(request_.seed));
   std::fflush(stdout);
 }

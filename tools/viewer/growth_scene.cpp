@@ -246,7 +246,7 @@ void GrowthScene::save(const std::string& path) {
 
 void GrowthScene::exportMesh(const std::string& path) {
   const Skeleton skeleton = colonizationSkeleton(*colonizer_, model_, seed_, TreeLimits{});
-  writeTreeFile(path, skeleton, model_.name, defaultTreeFileOptions());
+  writeTreeFile(path, skeleton, model_.name, TreeFileOptions{});
   std::printf("wrote %s (the mesh at age %u)\n", path.c_str(), colonizer_->age());
   std::fflush(stdout);
 }
