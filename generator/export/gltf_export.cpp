@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "export_checks.hpp"
+#include "unit_vectors.hpp"
 
 namespace arbor {
 
@@ -37,16 +38,8 @@ glm::vec3 yUp(const glm::vec3& v) { return {v.x, v.z, -v.y}; }
 
 bool isFinite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
-glm::vec3 unitOr(const glm::vec3& v, const glm::vec3& fallback) {
-  const float length = glm::length(v);
-  return (length > 1e-12f && std::isfinite(length)) ? v / length : fallback;
-}
-
-// Any unit vector at right angles to the unit vector n, for a tangent that carries no information.
-glm::vec3 perpendicularTo(const glm::vec3& n) {
-  const glm::vec3 axis = std::abs(n.x) < 0.9f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0);
-  return glm::normalize(glm::cross(n, axis));
-}
+using exporting::perpendicularTo;
+using exporting::unitOr;
 
 // Area-weighted face normals: where a stored normal is degenerate, the surface itself says which way is out.
 std::vector<glm::vec3> faceNormalSums(const QuadMesh& mesh) {

@@ -6,22 +6,15 @@
 #include <glm/geometric.hpp>
 
 #include "subdivide.hpp"
+#include "unit_vectors.hpp"
 #include "tree/build_tree.hpp"
 
 namespace arbor {
 
 namespace {
 
-glm::vec3 unitOr(const glm::dvec3& v, const glm::vec3& fallback) {
-  const double length = glm::length(v);
-  return length > 1e-12 && std::isfinite(length) ? glm::vec3(v / length) : fallback;
-}
-
-// Any unit vector at right angles to the unit vector n.
-glm::vec3 perpendicularTo(const glm::vec3& n) {
-  const glm::vec3 axis = std::abs(n.x) < 0.9f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0);
-  return glm::normalize(glm::cross(n, axis));
-}
+using exporting::perpendicularTo;
+using exporting::unitOr;
 
 // Appends one card: corners[k] with texcoords[k], all facing `normal`, tangent along +u. glTF's bitangent
 // (normal x tangent, times w) points up the image, against v; every card's v runs against its length, so w = -1.
@@ -42,9 +35,9 @@ void addCard(CardMesh& cards, const std::array<glm::vec3, 4>& corners, const std
 CardMesh leafCards(const std::vector<Leaf>& leaves) {
   CardMesh cards;
   for (const Leaf& leaf : leaves) {
-    const glm::vec3 along = unitOr(leaf.direction, glm::vec3(0, 0, 1));
-    glm::vec3 normal = unitOr(leaf.normal, perpendicularTo(along));
-    const glm::vec3 across = unitOr(glm::dvec3(glm::cross(normal, along)), perpendicularTo(normal));
+    const glm::vec3 along = unitOr(glm::vec3(leaf.direction), glm::vec3(0, 0, 1));
+    glm::vec3 normal = unitOr(glm::vec3(leaf.normal), perpendicularTo(along));
+    const glm::vec3 across = unitOr(glm::cross(normal, along), perpendicularTo(normal));
     normal = glm::normalize(glm::cross(along, across));  // exactly at right angles to the card
     const std::size_t kind = std::min<std::size_t>(leaf.kind, kLeafBladeShare.size() - 1);
     const float halfWidth = static_cast<float>(leaf.width) / kLeafBladeShare[kind];
@@ -77,7 +70,7 @@ CardMesh branchCards(const std::vector<ImpostorSegment>& segments) {
     const double length = glm::distance(a, b);
     const glm::dvec3 axis = (b - a) / length;
     // Two planes through the axis at right angles; the first holds the horizontal, so every stem's cards agree.
-    const glm::vec3 side1 = unitOr(glm::cross(axis, glm::dvec3(0, 0, 1)), perpendicularTo(glm::vec3(axis)));
+    const glm::vec3 side1 = unitOr(glm::vec3(glm::cross(axis, glm::dvec3(0, 0, 1))), perpendicularTo(glm::vec3(axis)));
     const glm::vec3 side2 = glm::normalize(glm::cross(glm::vec3(axis), side1));
     const glm::vec3 lo(a - axis * (0.5 * s.fromRadius)), hi(b + axis * (0.5 * s.toRadius));
     const auto r0 = static_cast<float>(s.fromRadius), r1 = static_cast<float>(s.toRadius);
@@ -97,16 +90,20 @@ namespace {
 // The keyframes' times: evenly over one period, the last one short of it (the loop returns to the first).
 double keyframeTime(const TreeAssetOptions& options, int frame) { return options.wind.period() * frame / options.windFrames; }
 
+// What the whole tree shares in the wind: its height (the trunk's bend) and its phase in the gusts.
+struct WindTree {
+  double height = 0.0, phase = 0.0;
+};
+
 // Each keyframe's offsets of the bark's vertices: the cage posed, then subdivided as the rest was.
 std::vector<std::vector<glm::vec3>> barkPoses(const Skeleton& skeleton, const TreeMesh& cage, const QuadMesh& bark,
-                                              const TreeAssetOptions& options, double height) {
+                                              const TreeAssetOptions& options, const WindTree& tree) {
   const std::vector<WindPoint> points = meshWindPoints(skeleton, cage);
-  const double phase = windPhase(skeleton);
   std::vector<std::vector<glm::vec3>> poses;
   for (int frame = 0; frame < options.windFrames; ++frame) {
     const double t = keyframeTime(options, frame);
     QuadMesh posed = cage.mesh;
-    for (std::size_t v = 0; v < posed.vertexCount(); ++v) posed.positions[v] += windOffset(cage.mesh.positions[v], points[v], options.wind, height, phase, t);
+    for (std::size_t v = 0; v < posed.vertexCount(); ++v) posed.positions[v] += windOffset(cage.mesh.positions[v], points[v], options.wind, tree.height, tree.phase, t);
     if (options.subdivide > 0) posed = subdivide(posed, options.subdivide, options.mesh.maxQuads);
     std::vector<glm::vec3> offsets(bark.vertexCount());
     for (std::size_t v = 0; v < offsets.size(); ++v) offsets[v] = posed.positions[v] - bark.positions[v];
@@ -117,16 +114,21 @@ std::vector<std::vector<glm::vec3>> barkPoses(const Skeleton& skeleton, const Tr
 
 // Branch cards move with the nodes at their ends (the layout of branchCards: two cards, eight corners, per segment).
 std::vector<std::vector<glm::vec3>> branchCardPoses(const Skeleton& skeleton, const std::vector<ImpostorSegment>& segments,
-                                                    const TreeAssetOptions& options, double height) {
-  const double phase = windPhase(skeleton);
+                                                    const TreeAssetOptions& options, const WindTree& tree) {
+  std::vector<std::array<WindPoint, 2>> ends;  // the carded segments' end nodes
+  for (const ImpostorSegment& s : segments) {
+    if (hasCards(s)) ends.push_back({nodeWindPoint(skeleton, s.fromNode), nodeWindPoint(skeleton, s.toNode)});
+  }
   std::vector<std::vector<glm::vec3>> poses;
   for (int frame = 0; frame < options.windFrames; ++frame) {
     const double t = keyframeTime(options, frame);
     std::vector<glm::vec3> offsets;
+    std::size_t carded = 0;
     for (const ImpostorSegment& s : segments) {
       if (!hasCards(s)) continue;
-      const glm::vec3 lo = windOffset(glm::vec3(s.from), nodeWindPoint(skeleton, s.fromNode), options.wind, height, phase, t);
-      const glm::vec3 hi = windOffset(glm::vec3(s.to), nodeWindPoint(skeleton, s.toNode), options.wind, height, phase, t);
+      const auto& [from, to] = ends[carded++];
+      const glm::vec3 lo = windOffset(glm::vec3(s.from), from, options.wind, tree.height, tree.phase, t);
+      const glm::vec3 hi = windOffset(glm::vec3(s.to), to, options.wind, tree.height, tree.phase, t);
       for (int card = 0; card < 2; ++card) offsets.insert(offsets.end(), {lo, lo, hi, hi});
     }
     poses.push_back(std::move(offsets));
@@ -135,16 +137,15 @@ std::vector<std::vector<glm::vec3>> branchCardPoses(const Skeleton& skeleton, co
 }
 
 // Leaves move with the node they hang from (four corners per leaf, in leafCards' order).
-std::vector<std::vector<glm::vec3>> leafPoses(const Skeleton& skeleton, const TreeAssetOptions& options, double height) {
+std::vector<std::vector<glm::vec3>> leafPoses(const Skeleton& skeleton, const TreeAssetOptions& options, const WindTree& tree) {
   const std::vector<WindPoint> points = leafWindPoints(skeleton);
-  const double phase = windPhase(skeleton);
   std::vector<std::vector<glm::vec3>> poses;
   for (int frame = 0; frame < options.windFrames; ++frame) {
     const double t = keyframeTime(options, frame);
     std::vector<glm::vec3> offsets;
     offsets.reserve(4 * skeleton.leaves.size());
     for (std::size_t i = 0; i < skeleton.leaves.size(); ++i) {
-      const glm::vec3 base = windOffset(glm::vec3(skeleton.leaves[i].position), points[i], options.wind, height, phase, t);
+      const glm::vec3 base = windOffset(glm::vec3(skeleton.leaves[i].position), points[i], options.wind, tree.height, tree.phase, t);
       offsets.insert(offsets.end(), {base, base, base, base});
     }
     poses.push_back(std::move(offsets));
@@ -160,6 +161,7 @@ TreeAsset makeTreeAsset(const Skeleton& skeleton, const std::string& name, const
   asset.name = name;
   const int levels = std::max(1, skeleton.levels);
   const int meshed = options.mesh.levels > 0 ? std::min(options.mesh.levels, levels) : levels;
+  const WindTree windTree = options.wind.on() ? WindTree{windHeight(skeleton), windPhase(skeleton)} : WindTree{};
   for (int lod = 0; lod < std::max(1, options.lods); ++lod) {
     const int lodLevels = meshed - lod;
     if (lodLevels < 1) break;  // the trunk stays a mesh: no coarser level of detail than that
@@ -185,14 +187,14 @@ TreeAsset makeTreeAsset(const Skeleton& skeleton, const std::string& name, const
     level.branchCards = branchCards(segments);
     if (options.wind.on()) {
       if (progress) progress("level of detail " + std::to_string(lod) + ": " + std::to_string(options.windFrames) + " wind poses");
-      level.barkPoses = barkPoses(skeleton, cage, level.bark, options, windHeight(skeleton));
-      level.branchCardPoses = branchCardPoses(skeleton, segments, options, windHeight(skeleton));
+      level.barkPoses = barkPoses(skeleton, cage, level.bark, options, windTree);
+      level.branchCardPoses = branchCardPoses(skeleton, segments, options, windTree);
     }
     asset.lods.push_back(std::move(level));
   }
   if (options.leaves) asset.leaves = leafCards(skeleton.leaves);
   if (options.wind.on()) {
-    if (options.leaves) asset.leafPoses = leafPoses(skeleton, options, windHeight(skeleton));
+    if (options.leaves) asset.leafPoses = leafPoses(skeleton, options, windTree);
     asset.windPeriod = options.wind.period();
   }
   return asset;
