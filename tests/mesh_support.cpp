@@ -12,4 +12,17 @@ TreeMesh meshOf(const std::string& preset, std::uint64_t seed, int levels) {
   return buildTreeMesh(generateSkeleton(loadPreset(preset), o));
 }
 
+WindyTree windyTree(const std::string& preset, int levels, int meshLevels) {
+  GrowthOptions growth;
+  growth.seed = 1;
+  growth.levels = levels;
+  WindyTree tree;
+  tree.skeleton = generateSkeleton(loadPreset(preset), growth);
+  BuildOptions build;
+  build.wind = true;
+  build.mesh.levels = meshLevels;
+  tree.geometry = buildTree(tree.skeleton, build);
+  return tree;
+}
+
 }  // namespace arbor::test

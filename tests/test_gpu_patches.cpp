@@ -11,8 +11,6 @@
 #include "mesh/tree_mesh.hpp"
 #include "patches/acc.hpp"
 #include "patches/pn_triangle.hpp"
-#include "growth/weber_penn/weber_penn.hpp"
-#include "tree/build_tree.hpp"
 #include "tree/wind.hpp"
 #include "mesh_support.hpp"
 #include "render_support.hpp"
@@ -303,13 +301,9 @@ TEST_CASE("culling changes no pixel, with uniform and adaptive factors", "[rende
 }
 
 TEST_CASE("with wind the control points are the CPU wind model's posed cage refined, and at rest again once it stops", "[render][patches][wind]") {
-  GrowthOptions growth;
-  growth.seed = 1;
-  growth.levels = 3;
-  const Skeleton skeleton = generateSkeleton(test::loadPreset("quaking-aspen"), growth);
-  BuildOptions build;
-  build.wind = true;
-  const TreeGeometry geometry = buildTree(skeleton, build);
+  const test::WindyTree tree = test::windyTree("quaking-aspen", 3);
+  const Skeleton& skeleton = tree.skeleton;
+  const TreeGeometry& geometry = tree.geometry;
   const QuadMesh& mesh = geometry.mesh.mesh;
   const PatchSet& patches = geometry.patches;
   render::RenderSession session(test::vulkan(), kWidth, kHeight, VK_SAMPLE_COUNT_1_BIT, test::textures());
@@ -349,14 +343,9 @@ TEST_CASE("with wind the control points are the CPU wind model's posed cage refi
 }
 
 TEST_CASE("the wind moves the picture, leaves and fake branches with it, and still air draws the tree as without wind", "[render][wind]") {
-  GrowthOptions growth;
-  growth.seed = 1;
-  growth.levels = 3;
-  const Skeleton skeleton = generateSkeleton(test::loadPreset("quaking-aspen"), growth);
-  BuildOptions build;
-  build.wind = true;
-  build.mesh.levels = 2;
-  const TreeGeometry geometry = buildTree(skeleton, build);
+  const test::WindyTree tree = test::windyTree("quaking-aspen", 3, 2);
+  const Skeleton& skeleton = tree.skeleton;
+  const TreeGeometry& geometry = tree.geometry;
   render::RenderSession session(test::vulkan(), kWidth, kHeight, VK_SAMPLE_COUNT_1_BIT, test::textures());
   session.setTree(geometry.mesh.mesh, geometry.patches, skeleton.leaves, geometry.impostors, &geometry.wind);
   REQUIRE(session.renderer().drawsLeaves());  // lavapipe has geometry shaders

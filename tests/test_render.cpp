@@ -10,7 +10,6 @@
 #include "growth/weber_penn/weber_penn.hpp"
 #include "image/image_compare.hpp"
 #include "mesh/tree_mesh.hpp"
-#include "tree/build_tree.hpp"
 #include "mesh_support.hpp"
 #include "render_support.hpp"
 #include "test_support.hpp"
@@ -181,13 +180,8 @@ namespace {
 // the two sides read the texture mirrored, which the seam fade hides: there the gap is measured, not zero.
 // With wind the control cage is posed first: the same must hold of the posed surface.
 void requireNoCracks(const WindSettings& wind) {
-  GrowthOptions growth;
-  growth.seed = 1;
-  growth.levels = 2;
-  const Skeleton skeleton = generateSkeleton(test::loadPreset("black-tupelo"), growth);
-  BuildOptions build;
-  build.wind = true;
-  const TreeGeometry geometry = buildTree(skeleton, build);
+  const test::WindyTree windy = test::windyTree("black-tupelo", 2);
+  const TreeGeometry& geometry = windy.geometry;
   const TreeMesh& tree = geometry.mesh;
   const PatchSet& patches = geometry.patches;
   render::RenderSession session(test::vulkan(), 160, 200, VK_SAMPLE_COUNT_1_BIT, test::textures());

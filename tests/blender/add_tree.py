@@ -4,9 +4,11 @@
 # has the module's quads, the leaves object exists, and the bark material has its image texture.
 import os
 import sys
-import traceback
 
 import bpy
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from checks import check, run_checks  # noqa: E402
 
 SOURCE = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 args = sys.argv[sys.argv.index("--") + 1 :] if "--" in sys.argv else []
@@ -15,14 +17,6 @@ if args:
 sys.path.insert(0, os.path.join(SOURCE, "tools", "blender"))
 
 PRESET, SEED, LEVELS = "black-tupelo", 3, 2
-failures = []
-
-
-def check(condition, what):
-    print(("ok   " if condition else "FAIL ") + what)
-    if not condition:
-        failures.append(what)
-
 
 def image_nodes(material):
     return [n for n in material.node_tree.nodes if n.type == "TEX_IMAGE" and n.image is not None]
@@ -90,10 +84,4 @@ def run():
         bpy.ops.wm.save_as_mainfile(filepath=os.environ["ARBOR_BLEND_OUT"])
 
 
-try:
-    run()
-except Exception:
-    traceback.print_exc()
-    failures.append("exception")
-print(f"arbor blender add-on: {len(failures)} failure(s)")
-sys.exit(1 if failures else 0)
+run_checks(run, "arbor blender add-on")

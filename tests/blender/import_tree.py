@@ -6,21 +6,16 @@
 import os
 import subprocess
 import sys
-import traceback
 
 import bpy
 import numpy
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from checks import check, run_checks  # noqa: E402
+
 numpy.bool = bool  # Debian 12's Blender 3.4 glTF importer still uses numpy.bool, which its numpy removed
 
 arbor, folder = sys.argv[sys.argv.index("--") + 1 :][:2]
-failures = []
-
-
-def check(condition, what):
-    print(("ok   " if condition else "FAIL ") + what)
-    if not condition:
-        failures.append(what)
 
 
 def generate(path, *options):
@@ -100,10 +95,4 @@ def run():
     check(0.01 < moved < 2.0, f"wind: the tree moves between frames 1 and 30 (at most {moved:.3f} m)")
 
 
-try:
-    run()
-except Exception:
-    traceback.print_exc()
-    failures.append("an exception")
-print(f"{len(failures)} failure(s)")
-sys.exit(1 if failures else 0)
+run_checks(run, "Blender imports")
