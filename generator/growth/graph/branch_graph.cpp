@@ -427,7 +427,10 @@ class Converter {
       // The root's heaviest trunk is always meshed (without it there may be no mesh); other trunks ending
       // inside the hub are stubs like children ending inside their parent.
       const bool mainTrunk = p.parentStem < 0 && static_cast<std::ptrdiff_t>(p.first) == next_[t_.root];
-      if (!mainTrunk) stem.stub = endsInsideParent(stem, attach) || (p.parentStem >= 0 && out_.stems[static_cast<std::size_t>(p.parentStem)].stub);
+      if (!mainTrunk) {
+        stem.stub = endsInsideParent(stem, attach) || (p.parentStem >= 0 && out_.stems[static_cast<std::size_t>(p.parentStem)].stub) ||
+                    insideAnotherStem(stem, p.parentStem);
+      }
     }
 
     // Nodes merged away hang (for leaves) from the last kept node before them; children start new stems.
@@ -441,6 +444,40 @@ class Converter {
       }
     }
     out_.stems.push_back(std::move(stem));
+  }
+
+  // Distance from p to the stem's polyline (from its attach node on) against the stem's radius there: below 1, p
+  // lies in that stem's wood.
+  double woodDepth(const SkeletonStem& stem, const Vec3& p) const {
+    double depth = 1e300;
+    std::int32_t from = stem.attachNode >= 0 ? stem.attachNode : stem.firstNode;
+    for (std::int32_t i = stem.firstNode; i < stem.firstNode + stem.nodeCount; from = i++) {
+      const SkeletonNode& a = out_.nodes[static_cast<std::size_t>(from)];
+      const SkeletonNode& b = out_.nodes[static_cast<std::size_t>(i)];
+      const Vec3 d = b.world.position - a.world.position;
+      const double dd = glm::dot(d, d);
+      const double t = dd > 0.0 ? std::clamp(glm::dot(p - a.world.position, d) / dd, 0.0, 1.0) : 0.0;
+      const double r = (1.0 - t) * (from == stem.attachNode ? b.startRadius : a.radius) + t * b.radius;
+      if (r > 0.0) depth = std::min(depth, glm::distance(p, a.world.position + t * d) / r);
+    }
+    return depth;
+  }
+
+  // A stem whose every node lies in the wood of its parent (a child drawn along its parent's own continuation)
+  // or of a thicker sibling leaving the same node (an L-system drawing one branch twice) has no surface of its own.
+  bool insideAnotherStem(const SkeletonStem& stem, std::int32_t parentStem) const {
+    auto inside = [&](const SkeletonStem& other) {
+      for (std::int32_t i = stem.firstNode; i < stem.firstNode + stem.nodeCount; ++i) {
+        if (woodDepth(other, out_.nodes[static_cast<std::size_t>(i)].world.position) > 1.0) return false;
+      }
+      return true;
+    };
+    if (parentStem >= 0 && inside(out_.stems[static_cast<std::size_t>(parentStem)])) return true;
+    // Stems leaving one node are queued together, so its earlier siblings are the last stems made.
+    for (auto it = out_.stems.rbegin(); it != out_.stems.rend() && it->attachNode == stem.attachNode; ++it) {
+      if (!it->stub && it->startRadius >= stem.startRadius && inside(*it)) return true;
+    }
+    return false;
   }
 
   // A stem whose every node lies within 1.5 radii of its parent's attach node has no tube outside its
