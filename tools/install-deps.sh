@@ -4,7 +4,7 @@ set -euo pipefail
 
 # --fuzz: also clang and its libFuzzer runtime (tools/fuzz.sh).
 packages=(
-  build-essential cmake pkg-config
+  build-essential cmake pkg-config libjemalloc-dev
   mesa-vulkan-drivers libvulkan-dev vulkan-validationlayers vulkan-tools glslang-tools spirv-tools
   libglfw3-dev libglm-dev libosd-dev libstb-dev catch2
   nlohmann-json3-dev libnanoflann-dev libtinyxml2-dev libtinygltf-dev libcli11-dev libimgui-dev
