@@ -145,15 +145,17 @@ void writeSections(const QuadMesh& mesh, bool triangles, std::ostream& stream, U
     int section;  // 0 v, 1 vt, 2 vn, 3 f
     std::size_t begin, end;
   };
-  constexpr std::size_t kLines = 32768;
+  constexpr std::size_t kLines = 8192;  // about a megabyte of text a block
   std::vector<Block> blocks;
   const std::size_t counts[4] = {mesh.vertexCount(), mesh.vertexCount(), mesh.vertexCount(), faceCount};
   for (int section = 0; section < 4; ++section)
     for (std::size_t i = 0; i < counts[section]; i += kLines) blocks.push_back({section, i, std::min(counts[section], i + kLines)});
   const auto axes = [up](const glm::vec3& p) { return up == Up::Y ? glm::vec3(p.x, p.z, -p.y) : p; };
-  auto print = [&](const Block& b) {
-    std::string out;
-    out.reserve((b.end - b.begin) * 64);
+  // Longest lines: v and vn three shortest-round-trip floats, vt two, a quad four v/vt/vn triples of 7 digits.
+  constexpr std::size_t kLineBytes[4] = {48, 32, 48, 100};
+  auto print = [&](const Block& b, std::string& out) {
+    out.clear();
+    out.reserve((b.end - b.begin) * kLineBytes[b.section]);
     for (std::size_t i = b.begin; i < b.end; ++i) {
       if (b.section == 1) {
         appendLine(out, "vt", {mesh.uvw[i].x, mesh.uvw[i].y});
@@ -166,18 +168,33 @@ void writeSections(const QuadMesh& mesh, bool triangles, std::ostream& stream, U
         appendFace(out, mesh.quads[i], verticesBefore);
       }
     }
-    return out;
   };
   stream.write(preamble.data(), static_cast<std::streamsize>(preamble.size()));
 
+  // Workers print blocks at most `window` ahead of the writer into buffers it hands back: a few megabytes in
+  // use whatever the file's size, each page touched once (fresh pages cost more than printing on a VM).
+  const unsigned cores = std::clamp(std::thread::hardware_concurrency(), 1u, 8u);
+  const std::size_t workerCount = std::min<std::size_t>(cores, blocks.size());
+  const std::size_t window = 2 * workerCount + 2;
   std::vector<std::string> text(blocks.size());
   std::vector<char> printed(blocks.size(), 0);
+  std::vector<std::string> spare;
+  std::size_t written = 0;
   std::mutex mutex;
   std::condition_variable ready;
   std::atomic<std::size_t> next{0};
   auto work = [&] {
     for (std::size_t i = next++; i < blocks.size(); i = next++) {
-      std::string out = print(blocks[i]);
+      std::string out;
+      {
+        std::unique_lock<std::mutex> lock(mutex);
+        ready.wait(lock, [&] { return i < written + window; });
+        if (!spare.empty()) {
+          out = std::move(spare.back());
+          spare.pop_back();
+        }
+      }
+      print(blocks[i], out);
       const std::lock_guard<std::mutex> lock(mutex);
       text[i] = std::move(out);
       printed[i] = 1;
@@ -185,8 +202,7 @@ void writeSections(const QuadMesh& mesh, bool triangles, std::ostream& stream, U
     }
   };
   std::vector<std::thread> workers;
-  const unsigned cores = std::clamp(std::thread::hardware_concurrency(), 1u, 8u);
-  for (unsigned w = 0; w < std::min<std::size_t>(cores, blocks.size()); ++w) workers.emplace_back(work);
+  for (std::size_t w = 0; w < workerCount; ++w) workers.emplace_back(work);
   for (std::size_t i = 0; i < blocks.size(); ++i) {
     std::string out;
     {
@@ -195,6 +211,10 @@ void writeSections(const QuadMesh& mesh, bool triangles, std::ostream& stream, U
       out = std::move(text[i]);
     }
     stream.write(out.data(), static_cast<std::streamsize>(out.size()));
+    const std::lock_guard<std::mutex> lock(mutex);
+    written = i + 1;
+    spare.push_back(std::move(out));
+    ready.notify_all();
   }
   for (std::thread& t : workers) t.join();
 }
