@@ -643,7 +643,7 @@ TEST_CASE("a complete asset: textures, cards, leaves shared by every level of de
   REQUIRE(asset.lods.size() == 3);
   CHECK(asset.lods[0].meshedLevels == 3);
   CHECK(asset.lods[2].meshedLevels == 1);
-  CHECK(asset.lods[1].bark.quads.size() < asset.lods[0].bark.quads.size());
+  CHECK(asset.lods[1].bark->quads.size() < asset.lods[0].bark->quads.size());
   CHECK(asset.lods[2].branchCards.quads.size() > asset.lods[1].branchCards.quads.size());
   CHECK(asset.leaves.quads.size() == skeleton.leaves.size());
 
@@ -680,7 +680,7 @@ TEST_CASE("a complete asset: textures, cards, leaves shared by every level of de
 TEST_CASE("OBJ of an asset: cards as objects after the surface, read back as the surface alone", "[export][obj]") {
   const Skeleton skeleton = growPreset("palm");
   const TreeAsset asset = makeTreeAsset(skeleton, "palm", TreeAssetOptions{});
-  const QuadMesh& bark = asset.lods[0].bark;
+  const QuadMesh& bark = *asset.lods[0].bark;
   std::ostringstream out;
   writeObj(bark, false, out, Up::Y, "palm.mtl");
   writeObjCards(asset.lods[0].branchCards, "branch_cards", "branch_cards", bark.vertexCount(), out);

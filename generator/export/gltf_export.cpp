@@ -369,7 +369,7 @@ Asset buildAsset(const TreeAsset& tree) {
   };
   if (!tree.leaves.empty()) leafPrimitive = cardPrimitive(tree.leaves, buffer, materials.leafMaterial(), false, posesOf(tree.leafPoses));
   for (const AssetLod& lod : tree.lods) {
-    Json primitives = Json::array({barkPrimitive(lod.bark, buffer, materials.barkMaterial(false), posesOf(lod.barkPoses))});
+    Json primitives = Json::array({barkPrimitive(*lod.bark, buffer, materials.barkMaterial(false), posesOf(lod.barkPoses))});
     if (!lod.branchCards.empty())
       primitives.push_back(cardPrimitive(lod.branchCards, buffer, materials.barkMaterial(true), !tree.textures.barkNormal.empty(), posesOf(lod.branchCardPoses)));
     if (leafPrimitive) primitives.push_back(*leafPrimitive);  // the same accessors in every level of detail
@@ -456,9 +456,10 @@ std::uint32_t glbLength(std::size_t size) {
 
 }  // namespace
 
-std::string writeGltf(const QuadMesh& mesh, const std::string& name) { return writeGltf(barkOnlyAsset(mesh, name)); }
+// The caller's mesh outlives the call: the asset points at it without owning it.
+std::string writeGltf(const QuadMesh& mesh, const std::string& name) { return writeGltf(barkOnlyAsset(std::shared_ptr<const QuadMesh>(std::shared_ptr<void>(), &mesh), name)); }
 
-std::string writeGlb(const QuadMesh& mesh, const std::string& name) { return writeGlb(barkOnlyAsset(mesh, name)); }
+std::string writeGlb(const QuadMesh& mesh, const std::string& name) { return writeGlb(barkOnlyAsset(std::shared_ptr<const QuadMesh>(std::shared_ptr<void>(), &mesh), name)); }
 
 std::string writeGltf(const TreeAsset& tree) {
   Asset asset = buildAsset(tree);

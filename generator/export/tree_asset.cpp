@@ -155,7 +155,7 @@ std::vector<std::vector<glm::vec3>> leafPoses(const Skeleton& skeleton, const Tr
 
 }  // namespace
 
-TreeAsset makeTreeAsset(const Skeleton& skeleton, const std::string& name, const TreeAssetOptions& options, const TreeMesh* finest,
+TreeAsset makeTreeAsset(const Skeleton& skeleton, const std::string& name, const TreeAssetOptions& options, std::shared_ptr<const TreeMesh> finest,
                         const std::function<void(const std::string&)>& progress) {
   TreeAsset asset;
   asset.name = name;
@@ -172,22 +172,24 @@ TreeAsset makeTreeAsset(const Skeleton& skeleton, const std::string& name, const
       progress("level of detail " + std::to_string(lod) + ": meshing stem levels 0-" + std::to_string(lodLevels - 1) +
                (options.subdivide > 0 ? ", " + std::to_string(options.subdivide) + " Catmull-Clark levels" : std::string()));
     }
-    TreeMesh coarse;
+    std::shared_ptr<const TreeMesh> coarse = finest;
     if (lod > 0 || finest == nullptr) {
       BuildOptions build;
       build.mesh = options.mesh;
       build.mesh.levels = lodLevels;
       build.patches = false;
-      coarse = buildTree(skeleton, build).mesh;
+      coarse = std::make_shared<const TreeMesh>(buildTree(skeleton, build).mesh);
     }
-    const TreeMesh& cage = lod > 0 || finest == nullptr ? coarse : *finest;
-    level.bark = options.subdivide > 0 ? subdivide(cage.mesh, options.subdivide, options.mesh.maxQuads) : cage.mesh;
+    const TreeMesh& cage = *coarse;
+    // Unsubdivided, the bark is the coarse mesh itself, shared (a copy was a sixth of a large export's time).
+    level.bark = options.subdivide > 0 ? std::make_shared<const QuadMesh>(subdivide(cage.mesh, options.subdivide, options.mesh.maxQuads))
+                                       : std::shared_ptr<const QuadMesh>(coarse, &coarse->mesh);
     // Stubs are never meshed, so every level of detail has their cards too (wheat's grains).
     const std::vector<ImpostorSegment> segments = options.branchCards ? impostorSegments(skeleton, lodLevels) : std::vector<ImpostorSegment>{};
     level.branchCards = branchCards(segments);
     if (options.wind.on()) {
       if (progress) progress("level of detail " + std::to_string(lod) + ": " + std::to_string(options.windFrames) + " wind poses");
-      level.barkPoses = barkPoses(skeleton, cage, level.bark, options, windTree);
+      level.barkPoses = barkPoses(skeleton, cage, *level.bark, options, windTree);
       level.branchCardPoses = branchCardPoses(skeleton, segments, options, windTree);
     }
     asset.lods.push_back(std::move(level));
@@ -200,7 +202,7 @@ TreeAsset makeTreeAsset(const Skeleton& skeleton, const std::string& name, const
   return asset;
 }
 
-TreeAsset barkOnlyAsset(QuadMesh bark, const std::string& name) {
+TreeAsset barkOnlyAsset(std::shared_ptr<const QuadMesh> bark, const std::string& name) {
   TreeAsset asset;
   asset.name = name;
   AssetLod level;

@@ -5,6 +5,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -48,7 +49,7 @@ CardMesh branchCards(const std::vector<ImpostorSegment>& segments);
 struct AssetLod {
   std::string name;        // "tupelo_lod0"
   int meshedLevels = 0;    // stem levels in the mesh (the deeper ones are cards)
-  QuadMesh bark;
+  std::shared_ptr<const QuadMesh> bark;  // shared with the caller's mesh where it is the coarse one (no copy)
   CardMesh branchCards;
   // With wind: per keyframe, each vertex's offset from its rest position (bark, then branch cards).
   std::vector<std::vector<glm::vec3>> barkPoses, branchCardPoses;
@@ -83,12 +84,13 @@ struct TreeAssetOptions {
 
 // The tree built at each level of detail (tree/build_tree), with its leaf and branch cards and, with wind, their
 // poses (tree/wind: the cage posed, then subdivided); textures are the caller's (they live in the engine's
-// assets). `finest`: the finest level's coarse mesh when the caller has built it already (with options.mesh).
+// assets). `finest`: the finest level's coarse mesh when the caller has built it already (with options.mesh); the
+// asset shares it rather than copying it.
 // `progress` hears each level of detail as it is built. Throws what buildTree and subdivide throw.
 TreeAsset makeTreeAsset(const Skeleton& skeleton, const std::string& name, const TreeAssetOptions& options,
-                        const TreeMesh* finest = nullptr, const std::function<void(const std::string&)>& progress = {});
+                        std::shared_ptr<const TreeMesh> finest = nullptr, const std::function<void(const std::string&)>& progress = {});
 
 // A bark mesh alone: one level of detail, no cards, no textures (the exporters' simplest input).
-TreeAsset barkOnlyAsset(QuadMesh bark, const std::string& name);
+TreeAsset barkOnlyAsset(std::shared_ptr<const QuadMesh> bark, const std::string& name);
 
 }  // namespace arbor

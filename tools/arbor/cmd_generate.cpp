@@ -81,7 +81,8 @@ int runGenerate(const GenerateOptions& o) {
   const Skeleton skeleton = source.grow(growth);
   const auto t1 = Clock::now();
 
-  TreeMesh tree;
+  const auto shared = std::make_shared<TreeMesh>();  // the export shares it (no copy of a large mesh)
+  TreeMesh& tree = *shared;
   double meshMs = 0.0;
   if (type != OutputType::Skeleton) {
     tree = buildTree(skeleton, BuildOptions{o.mesh, false}).mesh;  // patches are counted on another core below
@@ -107,7 +108,7 @@ int runGenerate(const GenerateOptions& o) {
       progress("meshed " + std::to_string(tree.mesh.quads.size()) + " quads; subdividing " + std::to_string(o.subdivide) +
                " time(s) (about " + std::to_string(tree.mesh.quads.size() << (2 * o.subdivide)) + " quads at the finest level)");
     }
-    writeTreeFile(o.out, skeleton, source.name(), fileOptions, &tree, progress);
+    writeTreeFile(o.out, skeleton, source.name(), fileOptions, shared, progress);
   }
   if (o.quiet) return 0;
 

@@ -94,9 +94,9 @@ int runGrow(const GrowOptions& o) {
   } else {
     // The tree build stage every command uses, as `arbor generate` meshes a model grown to the end.
     const Skeleton skeleton = colonizationSkeleton(colonizer, model, o.seed, limits);
-    const TreeMesh tree = buildTree(skeleton, BuildOptions{{}, false}).mesh;
-    writeTreeFile(o.out, skeleton, model.name, fileOptions, &tree);
-    written = std::to_string(tree.mesh.quads.size()) + " quads";
+    const auto tree = std::make_shared<const TreeMesh>(buildTree(skeleton, BuildOptions{{}, false}).mesh);
+    writeTreeFile(o.out, skeleton, model.name, fileOptions, tree);
+    written = std::to_string(tree->mesh.quads.size()) + " quads";
   }
   std::printf("%s, seed %llu: %u iterations (%s), %zu nodes, %zu enabled, %zu of %zu attraction points live, grown in %.1f ms\n",
               model.name.c_str(), static_cast<unsigned long long>(o.seed), colonizer.age(),

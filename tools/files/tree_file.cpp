@@ -39,12 +39,12 @@ AssetTextures exportTextures() {
 }
 
 void writeTreeFile(const std::string& path, const Skeleton& skeleton, const std::string& name, const TreeFileOptions& options,
-                   const TreeMesh* finest, const std::function<void(const std::string&)>& progress, const std::string& field) {
+                   std::shared_ptr<const TreeMesh> finest, const std::function<void(const std::string&)>& progress, const std::string& field) {
   requireMeshFile(path, field);
   const bool obj = endsWith(path, ".obj");
   TreeAssetOptions assetOptions = options.asset;
   if (obj) assetOptions.lods = 1;
-  TreeAsset asset = makeTreeAsset(skeleton, name, assetOptions, finest, progress);
+  TreeAsset asset = makeTreeAsset(skeleton, name, assetOptions, std::move(finest), progress);
   if (options.textures) asset.textures = exportTextures();
   if (progress) progress("writing " + path);
   if (!obj) {
@@ -67,8 +67,8 @@ void writeTreeFile(const std::string& path, const Skeleton& skeleton, const std:
   }
   const AssetLod& lod = asset.lods.front();
   writeFileAtomically(path, [&](std::ostream& out) {
-    writeObj(lod.bark, options.file.triangles, out, options.file.up, mtl);
-    std::size_t vertices = lod.bark.vertexCount();
+    writeObj(*lod.bark, options.file.triangles, out, options.file.up, mtl);
+    std::size_t vertices = lod.bark->vertexCount();
     if (!lod.branchCards.empty()) {
       writeObjCards(lod.branchCards, "branch_cards", mtl.empty() ? "" : "branch_cards", vertices, out, options.file.up);
       vertices += lod.branchCards.positions.size();

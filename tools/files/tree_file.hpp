@@ -36,12 +36,12 @@ struct TreeFileOptions {
 // The bark colour, a normal map made from the bark height and the leaf atlas, as PNG bytes, from assets/textures.
 AssetTextures exportTextures();
 
-// Builds the asset (makeTreeAsset; `finest`: the finest level's coarse mesh when the caller has built it) and
+// Builds the asset (makeTreeAsset; `finest`: the finest level's coarse mesh when the caller has built it, shared) and
 // writes it. OBJ: `stem.mtl` and `stem_bark_color.png`, `stem_bark_normal.png`, `stem_leaf_atlas.png` beside it
 // when textures are on. Throws InputError(path, field) for an extension that is not a mesh file, before anything
 // is built or written. `progress` hears each step that may take a while.
 void writeTreeFile(const std::string& path, const Skeleton& skeleton, const std::string& name, const TreeFileOptions& options,
-                   const TreeMesh* finest = nullptr, const std::function<void(const std::string&)>& progress = {},
+                   std::shared_ptr<const TreeMesh> finest = nullptr, const std::function<void(const std::string&)>& progress = {},
                    const std::string& field = "--out");
 
 }  // namespace arbor
