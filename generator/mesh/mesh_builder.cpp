@@ -45,6 +45,9 @@ struct PortStart {
   bool clearGrandparent = false;
   Vec3 grandPoint{0.0}, grandAxis{0.0};
   double grandReach = 0.0;
+  // Texture v at the port, read from the parent's cross sections when the port is made: a sibling's neck adding
+  // to a shared corner later does not change it, so each child can be built apart from its siblings.
+  double tex = 0.0;
 };
 
 class Builder {
@@ -183,6 +186,13 @@ class Builder {
     return port;
   }
 
+  // Texture v of a port: its corners' mean.
+  double portTex(const std::array<std::uint32_t, 4>& q) const {
+    double tex = 0.0;
+    for (std::uint32_t v : q) tex += 0.25 * uvwSum_[v].y / std::max(1, uvwCount_[v]);
+    return tex;
+  }
+
   Vec3 faceNormal(const std::array<std::uint32_t, 4>& q) const {
     const Vec3 n = glm::cross(position(q[2]) - position(q[0]), position(q[3]) - position(q[1]));
     return glm::normalize(n);
@@ -244,8 +254,7 @@ class Builder {
     const Vec3 normal = faceNormal(q);
     double portRadius = 0.0;
     for (std::uint32_t v : q) portRadius += 0.25 * glm::distance(position(v), center);
-    port.tex = 0.0;
-    for (std::uint32_t v : q) port.tex += 0.25 * uvwSum_[v].y / std::max(1, uvwCount_[v]);
+    port.tex = start.tex;
 
     const Vec3 d = poly.startDirection();
     const double rc = poly.radius(0.0);
@@ -744,6 +753,7 @@ class Builder {
     auto portStart = [&](const std::array<std::uint32_t, 4>& q, bool onTop, double reach) {
       PortStart p{q, branchPoint, onTop, axis, reach};
       p.slabReach = slabReach;
+      p.tex = portTex(q);
       return withGrandparent(p);
     };
     if (top && a.top >= 0) deferred_->emplace_back(children[static_cast<std::size_t>(a.top)], portStart(top->v, true, 0.0));
@@ -812,7 +822,7 @@ class Builder {
     double rho = 0.0;
     for (std::uint32_t v : q) rho += 0.25 * glm::distance(position(v), center);
     Ring port = portRing(q);
-    for (std::uint32_t v : q) port.tex += 0.25 * uvwSum_[v].y / std::max(1, uvwCount_[v]);
+    port.tex = portTex(q);
     const RingFrame frame = transportFrame(port.frame, n);
     const double r = 0.8 * rho / opt_.limitCompensation;
     const Ring a = emitRing(parentStem, center + n * (0.5 * rho), frame, r, port.tex + barkTextureAdvance(0.5 * rho, r));
