@@ -683,8 +683,9 @@ TEST_CASE("OBJ of an asset: cards as objects after the surface, read back as the
   const QuadMesh& bark = *asset.lods[0].bark;
   std::ostringstream out;
   writeObj(bark, false, out, Up::Y, "palm.mtl");
-  writeObjCards(asset.lods[0].branchCards, "branch_cards", "branch_cards", bark.vertexCount(), out);
-  writeObjCards(asset.leaves, "leaves", "leaves", bark.vertexCount() + asset.lods[0].branchCards.positions.size(), out);
+  ObjCounts counts{bark.vertexCount(), bark.vertexCount(), bark.vertexCount()};
+  writeObjCards(asset.lods[0].branchCards, "branch_cards", "branch_cards", counts, out);
+  writeObjCards(asset.leaves, "leaves", "leaves", counts, out);
   const std::string text = out.str();
   CHECK_THAT(text, Contains("\nmtllib palm.mtl\nusemtl bark\n") && Contains("\no leaves\nusemtl leaves\n"));
   std::size_t faces = 0;
@@ -693,6 +694,56 @@ TEST_CASE("OBJ of an asset: cards as objects after the surface, read back as the
   const QuadMesh back = readObj(text, "palm.obj");
   CHECK(back.quads == bark.quads);
   CHECK(back.positions.size() == bark.positions.size());
+
+  // Every card corner resolves to its own position, texture coordinate (OBJ's v up the image) and normal, though
+  // the cards write each distinct texture coordinate and normal once.
+  std::vector<glm::vec3> v, vn;
+  std::vector<glm::vec2> vt;
+  std::vector<std::array<std::array<long, 3>, 4>> cardFaces;
+  bool inCards = false;
+  std::istringstream lines(text);
+  for (std::string line; std::getline(lines, line);) {
+    std::istringstream words(line);
+    std::string key;
+    words >> key;
+    if (key == "o") inCards = true;
+    float x = 0, y = 0, z = 0;
+    if (key == "v" && words >> x >> y >> z) v.emplace_back(x, y, z);
+    if (key == "vn" && words >> x >> y >> z) vn.emplace_back(x, y, z);
+    if (key == "vt" && words >> x >> y) vt.emplace_back(x, y);
+    if (key == "f" && inCards) {
+      std::array<std::array<long, 3>, 4> face{};
+      for (auto& corner : face) {
+        std::string c;
+        words >> c;
+        REQUIRE(std::sscanf(c.c_str(), "%ld/%ld/%ld", &corner[0], &corner[1], &corner[2]) == 3);
+      }
+      cardFaces.push_back(face);
+    }
+  }
+  const std::size_t cardCorners = asset.lods[0].branchCards.positions.size() + asset.leaves.positions.size();
+  CHECK(v.size() == bark.vertexCount() + cardCorners);
+  CHECK(vt.size() < bark.vertexCount() + cardCorners / 2);  // leaves share their atlas corners
+  CHECK(vn.size() <= bark.vertexCount() + cardCorners / 4);  // one normal a card at most
+  REQUIRE(cardFaces.size() == asset.lods[0].branchCards.quads.size() + asset.leaves.quads.size());
+  std::size_t mismatches = 0, face = 0;
+  std::size_t firstVertex = bark.vertexCount();
+  for (const CardMesh* cards : {&asset.lods[0].branchCards, &asset.leaves}) {
+    for (const auto& quad : cards->quads) {
+      for (std::size_t k = 0; k < 4; ++k) {
+        const auto& [pi, ti, ni] = cardFaces[face][k];
+        const std::uint32_t c = quad[k];
+        const glm::vec3 p = cards->positions[c], n = cards->normals[c];
+        mismatches += static_cast<std::size_t>(pi) != firstVertex + c + 1;
+        mismatches += v[static_cast<std::size_t>(pi - 1)] != glm::vec3(p.x, p.z, -p.y);
+        mismatches += vn[static_cast<std::size_t>(ni - 1)] != glm::vec3(n.x, n.z, -n.y);
+        mismatches += vt[static_cast<std::size_t>(ti - 1)] != glm::vec2(cards->texcoords[c].x, 1.0f - cards->texcoords[c].y);
+      }
+      ++face;
+    }
+    firstVertex += cards->positions.size();
+  }
+  CHECK(mismatches == 0);
   const std::string mtl = writeMtl("c.png", "n.png", "a.png");
   CHECK_THAT(mtl, Contains("newmtl bark") && Contains("map_Kd c.png") && Contains("map_Bump -bm 1 n.png") &&
                       Contains("newmtl leaves") && Contains("map_d a.png"));

@@ -1,6 +1,9 @@
 #include "obj_export.hpp"
 
 #include <algorithm>
+#include <cstring>
+#include <functional>
+#include <unordered_map>
 #include <charconv>
 #include <cstdint>
 #include <initializer_list>
@@ -135,39 +138,30 @@ std::optional<Quad> joinTriangles(const Triangle& first, const Triangle& second)
 
 namespace {
 
-// v, vt, vn and f lines of `mesh` after `preamble`, faces numbered after `verticesBefore` vertices. Printing the
-// numbers is most of the work (a tree's OBJ is tens of megabytes): blocks of lines are printed on every core in
-// turn while this thread writes them out in file order.
-void writeSections(const QuadMesh& mesh, bool triangles, std::ostream& stream, Up up, std::uint64_t verticesBefore, const std::string& preamble) {
-  const auto triangleList = triangles ? triangulate(mesh) : std::vector<Triangle>{};
-  const std::size_t faceCount = triangles ? triangleList.size() : mesh.quads.size();
+// What one part of an OBJ file holds: how many v, vt, vn and f lines, and how to print line i of each.
+struct ObjLines {
+  std::size_t count[4] = {0, 0, 0, 0};  // v, vt, vn, f
+  std::function<void(std::string&, std::size_t)> print[4];
+};
+
+// `lines` after `preamble`. Printing the numbers is most of the work (a tree's OBJ is tens of megabytes): blocks of
+// lines are printed on every core in turn while this thread writes them out in file order.
+void writeSections(const ObjLines& lines, std::ostream& stream, const std::string& preamble) {
   struct Block {
     int section;  // 0 v, 1 vt, 2 vn, 3 f
     std::size_t begin, end;
   };
   constexpr std::size_t kLines = 8192;  // about a megabyte of text a block
   std::vector<Block> blocks;
-  const std::size_t counts[4] = {mesh.vertexCount(), mesh.vertexCount(), mesh.vertexCount(), faceCount};
   for (int section = 0; section < 4; ++section)
-    for (std::size_t i = 0; i < counts[section]; i += kLines) blocks.push_back({section, i, std::min(counts[section], i + kLines)});
-  const auto axes = [up](const glm::vec3& p) { return up == Up::Y ? glm::vec3(p.x, p.z, -p.y) : p; };
+    for (std::size_t i = 0; i < lines.count[section]; i += kLines) blocks.push_back({section, i, std::min(lines.count[section], i + kLines)});
   // Longest lines: v and vn three shortest-round-trip floats, vt two, a quad four v/vt/vn triples of 7 digits.
   constexpr std::size_t kLineBytes[4] = {48, 32, 48, 100};
   auto print = [&](const Block& b, std::string& out) {
     out.clear();
     out.reserve((b.end - b.begin) * kLineBytes[b.section]);
-    for (std::size_t i = b.begin; i < b.end; ++i) {
-      if (b.section == 1) {
-        appendLine(out, "vt", {mesh.uvw[i].x, mesh.uvw[i].y});
-      } else if (b.section == 0 || b.section == 2) {
-        const glm::vec3 q = axes(b.section == 0 ? mesh.positions[i] : mesh.normals[i]);
-        appendLine(out, b.section == 0 ? "v" : "vn", {q.x, q.y, q.z});
-      } else if (triangles) {
-        appendFace(out, triangleList[i], verticesBefore);
-      } else {
-        appendFace(out, mesh.quads[i], verticesBefore);
-      }
-    }
+    const auto& line = lines.print[b.section];
+    for (std::size_t i = b.begin; i < b.end; ++i) line(out, i);
   };
   stream.write(preamble.data(), static_cast<std::streamsize>(preamble.size()));
 
@@ -219,6 +213,39 @@ void writeSections(const QuadMesh& mesh, bool triangles, std::ostream& stream, U
   for (std::thread& t : workers) t.join();
 }
 
+glm::vec3 toAxes(const glm::vec3& p, Up up) { return up == Up::Y ? glm::vec3(p.x, p.z, -p.y) : p; }
+
+void appendCorner(std::string& out, std::uint64_t v, std::uint64_t vt, std::uint64_t vn) {
+  char digits[72];
+  char* end = std::to_chars(digits, digits + 24, v + 1).ptr;  // OBJ counts from 1
+  *end++ = '/';
+  end = std::to_chars(end, end + 24, vt + 1).ptr;
+  *end++ = '/';
+  end = std::to_chars(end, end + 24, vn + 1).ptr;
+  out += ' ';
+  out.append(digits, end);
+}
+
+// Index of each value in `values` among its distinct values (first seen first), and those values: cards repeat
+// their atlas corners and every corner of a card has the card's normal, so each is written once.
+template <typename T>
+std::vector<std::uint32_t> distinctIndex(const std::vector<T>& values, std::vector<T>& distinct) {
+  std::vector<std::uint32_t> index(values.size());
+  std::unordered_map<std::string_view, std::uint32_t> seen;
+  seen.reserve(values.size() / 4 + 16);
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    if (i > 0 && std::memcmp(&values[i], &values[i - 1], sizeof(T)) == 0) {  // a card's corners share one normal
+      index[i] = index[i - 1];
+      continue;
+    }
+    const std::string_view key(reinterpret_cast<const char*>(&values[i]), sizeof(T));
+    const auto [it, added] = seen.emplace(key, static_cast<std::uint32_t>(distinct.size()));
+    if (added) distinct.push_back(values[i]);
+    index[i] = it->second;
+  }
+  return index;
+}
+
 }  // namespace
 
 void writeObj(const QuadMesh& mesh, bool triangles, std::ostream& stream, Up up) { writeObj(mesh, triangles, stream, up, {}); }
@@ -227,12 +254,29 @@ void writeObj(const QuadMesh& mesh, bool triangles, std::ostream& stream, Up up,
   exporting::requirePerVertex(mesh, mesh.normals.size(), "normals", "writeObj");
   exporting::requirePerVertex(mesh, mesh.uvw.size(), "uvw", "writeObj");
   exporting::requireQuadIndicesInRange(mesh, "writeObj");
-  const std::size_t faceCount = triangles ? 2 * mesh.quads.size() : mesh.quads.size();
+  const auto triangleList = triangles ? triangulate(mesh) : std::vector<Triangle>{};
+  const std::size_t faceCount = triangles ? triangleList.size() : mesh.quads.size();
   std::string header = std::string("# Arbor tree mesh: object space in metres, ") + (up == Up::Y ? "y up" : "z up") + "\n# " +
                        std::to_string(mesh.vertexCount()) + " vertices, " + std::to_string(faceCount) + (triangles ? " triangles" : " quads") +
                        "; vt is (u, v), the flip coordinate is not stored\n";
   if (!mtlFile.empty()) header += "mtllib " + mtlFile + "\nusemtl bark\n";
-  writeSections(mesh, triangles, stream, up, 0, header);
+  ObjLines lines;
+  for (int section = 0; section < 3; ++section) lines.count[section] = mesh.vertexCount();
+  lines.count[3] = faceCount;
+  lines.print[0] = [&](std::string& out, std::size_t i) {
+    const glm::vec3 q = toAxes(mesh.positions[i], up);
+    appendLine(out, "v", {q.x, q.y, q.z});
+  };
+  lines.print[1] = [&](std::string& out, std::size_t i) { appendLine(out, "vt", {mesh.uvw[i].x, mesh.uvw[i].y}); };
+  lines.print[2] = [&](std::string& out, std::size_t i) {
+    const glm::vec3 q = toAxes(mesh.normals[i], up);
+    appendLine(out, "vn", {q.x, q.y, q.z});
+  };
+  lines.print[3] = [&](std::string& out, std::size_t i) {
+    if (triangles) appendFace(out, triangleList[i], 0);
+    else appendFace(out, mesh.quads[i], 0);
+  };
+  writeSections(lines, stream, header);
 }
 
 std::string writeObj(const QuadMesh& mesh, bool triangles, Up up) {
@@ -241,17 +285,43 @@ std::string writeObj(const QuadMesh& mesh, bool triangles, Up up) {
   return std::move(out).str();
 }
 
-void writeObjCards(const CardMesh& cards, const std::string& object, const std::string& material, std::size_t verticesBefore,
-                   std::ostream& stream, Up up) {
-  // The cards as a quad mesh of their own; OBJ's v grows up the image, glTF's (and the cards') down it.
-  QuadMesh mesh;
-  mesh.positions = cards.positions;
-  mesh.normals = cards.normals;
-  mesh.uvw.reserve(cards.texcoords.size());
-  for (const glm::vec2& t : cards.texcoords) mesh.uvw.emplace_back(t.x, 1.0f - t.y, 0.0f);
-  mesh.quads = cards.quads;
-  exporting::requireQuadIndicesInRange(mesh, "writeObjCards");
-  writeSections(mesh, false, stream, up, verticesBefore, "o " + object + "\n" + (material.empty() ? std::string() : "usemtl " + material + "\n"));
+void writeObjCards(const CardMesh& cards, const std::string& object, const std::string& material, ObjCounts& before, std::ostream& stream,
+                   Up up) {
+  QuadMesh check;  // the index check wants a mesh: positions and quads are all it looks at
+  check.positions = cards.positions;
+  check.quads = cards.quads;
+  exporting::requireQuadIndicesInRange(check, "writeObjCards");
+  // OBJ's v grows up the image, glTF's (and the cards') down it.
+  std::vector<glm::vec2> texcoords(cards.texcoords.size());
+  for (std::size_t i = 0; i < texcoords.size(); ++i) texcoords[i] = glm::vec2(cards.texcoords[i].x, 1.0f - cards.texcoords[i].y);
+  std::vector<glm::vec2> distinctTexcoords;
+  std::vector<glm::vec3> distinctNormals;
+  const std::vector<std::uint32_t> vt = distinctIndex(texcoords, distinctTexcoords);
+  const std::vector<std::uint32_t> vn = distinctIndex(cards.normals, distinctNormals);
+  const ObjCounts at = before;
+  ObjLines lines;
+  lines.count[0] = cards.positions.size();
+  lines.count[1] = distinctTexcoords.size();
+  lines.count[2] = distinctNormals.size();
+  lines.count[3] = cards.quads.size();
+  lines.print[0] = [&](std::string& out, std::size_t i) {
+    const glm::vec3 q = toAxes(cards.positions[i], up);
+    appendLine(out, "v", {q.x, q.y, q.z});
+  };
+  lines.print[1] = [&](std::string& out, std::size_t i) { appendLine(out, "vt", {distinctTexcoords[i].x, distinctTexcoords[i].y}); };
+  lines.print[2] = [&](std::string& out, std::size_t i) {
+    const glm::vec3 q = toAxes(distinctNormals[i], up);
+    appendLine(out, "vn", {q.x, q.y, q.z});
+  };
+  lines.print[3] = [&](std::string& out, std::size_t i) {
+    out += 'f';
+    for (const std::uint32_t c : cards.quads[i]) appendCorner(out, at.v + c, at.vt + vt[c], at.vn + vn[c]);
+    out += '\n';
+  };
+  writeSections(lines, stream, "o " + object + "\n" + (material.empty() ? std::string() : "usemtl " + material + "\n"));
+  before.v += lines.count[0];
+  before.vt += lines.count[1];
+  before.vn += lines.count[2];
 }
 
 std::string writeMtl(const std::string& barkColor, const std::string& barkNormal, const std::string& leafAtlas) {

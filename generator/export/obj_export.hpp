@@ -1,7 +1,9 @@
 #pragma once
 // Wavefront OBJ for artists' tools: the quad mesh as it is, object space in metres, y up as Blender, Maya and
 // most engines import OBJ (z up on request, the project's own axes).
-// One vertex carries one position, one texture coordinate and one normal, so every face corner is "i/i/i".
+// A mesh vertex carries one position, one texture coordinate and one normal, so every face corner is "i/i/i";
+// cards share texture coordinates and normals between corners.
+#include <cstdint>
 #include <ostream>
 #include <string>
 #include <string_view>
@@ -28,9 +30,15 @@ void writeObj(const QuadMesh& mesh, bool triangles, std::ostream& out, Up up, co
 // The objects cards are written as; readers of the tree's surface stop where the first of them begins.
 inline bool isObjCardObject(std::string_view name) { return name == "branch_cards" || name == "leaves"; }
 
-// Cards after a mesh in the same file: `o object`, `usemtl material` (unless empty), their v, vt, vn and one
-// quad per card, numbered after the `verticesBefore` vertices already in the file.
-void writeObjCards(const CardMesh& cards, const std::string& object, const std::string& material, std::size_t verticesBefore,
+// How many v, vt and vn lines an OBJ file holds so far: the next part's indices count on from them.
+struct ObjCounts {
+  std::uint64_t v = 0, vt = 0, vn = 0;
+};
+
+// Cards after a mesh in the same file: `o object`, `usemtl material` (unless empty), their v lines, each distinct
+// vt and vn once (a card's corners share its normal, leaves share their atlas cell's corners), and one quad per
+// card, numbered after `before`, which then counts the cards' lines too.
+void writeObjCards(const CardMesh& cards, const std::string& object, const std::string& material, ObjCounts& before,
                    std::ostream& out, Up up = Up::Y);
 
 // The .mtl for an OBJ of a tree asset: materials bark, branch_cards and leaves (alpha from the atlas), naming the
