@@ -72,22 +72,31 @@ TEST_CASE("every preset meshes to one closed, outward, manifold piece at several
 
 TEST_CASE("the mesher's own crossings stay at or below what was measured for every preset", "[mesh][self-intersection]") {
   // Issue 13's floor is no mesh-made pair at all; it is not met yet (docs/mesh.md, "Known limits"). These are
-  // the counts of 2026-12-02 (seed 1, a collar counted as its parent's surface) plus a tenth: a change to the
-  // mesher that makes more fails here.
+  // the sums over seeds 1-3 of 2026-12-02 (a collar counted as its parent's surface) plus a tenth: a change to the
+  // mesher that makes more fails here. Three seeds, not one: any change to a joint moves one tree's count by a
+  // fifth either way (the exact clearance of a child's skeleton: the poplar's seed 1 went 138 -> 161, seed 2
+  // 115 -> 103), the sum by a few percent.
   struct Measured {
     const char* preset;
     std::size_t meshMade, folds, necks;
   };
-  for (const Measured& m : {Measured{"black-tupelo", 59, 0, 0}, Measured{"ca-black-oak", 91, 0, 43},
-                            Measured{"lombardy-poplar", 138, 0, 2}, Measured{"palm", 122, 0, 0},
-                            Measured{"quaking-aspen", 0, 0, 0}, Measured{"weeping-willow", 451, 16, 20}}) {
+  for (const Measured& m : {Measured{"black-tupelo", 158, 4, 0}, Measured{"ca-black-oak", 273, 0, 113},
+                            Measured{"lombardy-poplar", 410, 4, 10}, Measured{"palm", 457, 0, 0},
+                            Measured{"quaking-aspen", 52, 0, 37}, Measured{"weeping-willow", 2108, 42, 99}}) {
     INFO(m.preset);
-    const Skeleton s = grow(test::loadPreset(m.preset), 1);
-    const SelfIntersectionReport r = checkSelfIntersections(buildTreeMesh(s), s);
-    CHECK(r.skeletonMade > 0);  // Weber-Penn's branches do cross: the check sees them and tells them apart
-    CHECK(r.meshMade * 10 <= m.meshMade * 11 + 5);
-    CHECK(r.folds * 10 <= m.folds * 11 + 5);
-    CHECK(r.neckCrossings * 10 <= m.necks * 11 + 5);
+    std::size_t meshMade = 0, folds = 0, necks = 0, skeletonMade = 0;
+    for (std::uint64_t seed : {1u, 2u, 3u}) {
+      const Skeleton s = grow(test::loadPreset(m.preset), seed);
+      const SelfIntersectionReport r = checkSelfIntersections(buildTreeMesh(s), s);
+      skeletonMade += r.skeletonMade;
+      meshMade += r.meshMade;
+      folds += r.folds;
+      necks += r.neckCrossings;
+    }
+    CHECK(skeletonMade > 0);  // Weber-Penn's branches do cross: the check sees them and tells them apart
+    CHECK(meshMade * 10 <= m.meshMade * 11 + 5);
+    CHECK(folds * 10 <= m.folds * 11 + 5);
+    CHECK(necks * 10 <= m.necks * 11 + 5);
   }
 }
 

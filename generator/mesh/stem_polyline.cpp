@@ -86,23 +86,21 @@ double StemPolyline::firstBeyond(const Vec3& from, double distance) const {
 }
 
 double StemPolyline::firstClearOf(const Vec3& point, const Vec3& axis, double clearance) const {
-  auto away = [&](double s) {
-    const Vec3 d = position(s) - point;
-    return glm::length(d - axis * glm::dot(d, axis));
-  };
-  // March in steps of a third of the clearance, then bisect the crossing.
-  const double step = std::max(clearance / 3.0, length() * 1e-4);
-  double prev = 0.0;
-  for (double s = 0.0; s <= length(); s += step) {
-    if (away(s) >= clearance) {
-      double lo = prev, hi = s;
-      for (int i = 0; i < 20; ++i) {
-        const double mid = 0.5 * (lo + hi);
-        (away(mid) >= clearance ? hi : lo) = mid;
-      }
-      return hi;
-    }
-    prev = s;
+  // Along an edge the squared distance from the axis is a quadratic in the edge's parameter t, so the first edge
+  // to reach `clearance` gives the crossing exactly (marching in steps of a third of it, then bisecting, was a
+  // tenth of a large tree's mesh time: children running along their parent never cleared it).
+  const double c2 = clearance * clearance;
+  for (std::size_t i = 1; i < p_.size(); ++i) {
+    const Vec3 a = p_[i - 1] - point, e = p_[i] - p_[i - 1];
+    const Vec3 across = a - axis * glm::dot(a, axis), grows = e - axis * glm::dot(e, axis);
+    const double aa = glm::dot(across, across) - c2;
+    if (aa >= 0.0) return s_[i - 1];
+    // f(t) = |grows|^2 t^2 + 2 (across . grows) t + aa, negative at 0: its larger root, in the cancellation-free form.
+    const double ab = glm::dot(across, grows), disc = ab * ab - glm::dot(grows, grows) * aa;
+    const double denominator = ab + std::sqrt(std::max(disc, 0.0));
+    if (denominator <= 0.0) continue;
+    const double t = -aa / denominator;
+    if (t <= 1.0) return s_[i - 1] + t * (s_[i] - s_[i - 1]);
   }
   return length();
 }
