@@ -390,14 +390,21 @@ class Builder {
     if (start.parentFacesEnd <= start.parentFacesBegin) return false;
     FaceGrid& grid = parentGrid(start.parentFacesBegin, start.parentFacesEnd);
     const Box band = boxOf(std::array<Vec3, 8>{a[0], a[1], a[2], a[3], b[0], b[1], b[2], b[3]});
+    std::array<std::array<Vec3, 4>, 4> sides;
+    std::array<Box, 4> sideBoxes;
+    for (std::size_t i = 0; i < 4; ++i) {
+      const std::size_t j = (i + 1) % 4;
+      sides[i] = {a[i], a[j], b[j], b[i]};
+      sideBoxes[i] = boxOf(sides[i]);
+    }
     for (std::uint32_t f : grid.candidates(band)) {
+      const Box& faceBox = grid.box(f);
       const auto& q = out_.mesh.quads[start.parentFacesBegin + f];
       const std::array<Vec3, 4> face{position(q[0]), position(q[1]), position(q[2]), position(q[3])};
-      const Box& faceBox = grid.box(f);
       for (int k = 0; k < 4; ++k) {
         const auto i = static_cast<std::size_t>(k), j = static_cast<std::size_t>((k + 1) % 4);
-        const std::array<Vec3, 4> side{a[i], a[j], b[j], b[i]};
-        if (!boxOf(side).overlaps(faceBox)) continue;
+        const std::array<Vec3, 4>& side = sides[i];
+        if (!sideBoxes[i].overlaps(faceBox)) continue;
         if (port) {
           // Beside the port the side meets the face at their shared corners only, as the check tests it
           // (b's corners are not made yet: indices no vertex has).

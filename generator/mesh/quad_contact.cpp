@@ -171,7 +171,11 @@ std::optional<Vec3> quadsMeet(const QuadCorners& a, const QuadCorners& b) {
     }
     return above == 4 - shared || below == 4 - shared;
   };
-  const std::array<bool, 2> clearA{clear(ta[0], b), clear(ta[1], b)}, clearB{clear(tb[0], a), clear(tb[1], a)};
+  // Both of one quad's triangles clear of the other: done before the other two tests (a third of the mesher's time).
+  const std::array<bool, 2> clearA{clear(ta[0], b), clear(ta[1], b)};
+  if (clearA[0] && clearA[1]) return std::nullopt;
+  const std::array<bool, 2> clearB{clear(tb[0], a), clear(tb[1], a)};
+  if (clearB[0] && clearB[1]) return std::nullopt;
   for (std::size_t i = 0; i < 2; ++i) {
     if (clearA[i]) continue;
     for (std::size_t j = 0; j < 2; ++j) {
