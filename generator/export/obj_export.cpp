@@ -10,6 +10,7 @@
 #include <limits>
 #include <atomic>
 #include <condition_variable>
+#include <memory>
 #include <mutex>
 #include <optional>
 #include <thread>
@@ -26,36 +27,34 @@ namespace arbor {
 namespace {
 
 // Shortest text that reads back as the same float, so a write/read round trip is exact.
-void appendFloat(std::string& out, float x) {
-  char buffer[32];
-  const auto result = std::to_chars(buffer, buffer + sizeof buffer, x);
-  out.append(buffer, result.ptr);
-}
+void appendFloat(char*& out, float x) { out = std::to_chars(out, out + 24, x).ptr; }
 
-void appendLine(std::string& out, const char* keyword, std::initializer_list<float> values) {
-  out += keyword;
+void appendLine(char*& out, const char* keyword, std::initializer_list<float> values) {
+  while (*keyword != '\0') *out++ = *keyword++;
   for (const float x : values) {
-    out += ' ';
+    *out++ = ' ';
     appendFloat(out, x);
   }
-  out += '\n';
+  *out++ = '\n';
 }
 
+void appendIndex(char*& out, std::uint64_t index) { out = std::to_chars(out, out + 24, index + 1).ptr; }  // OBJ counts from 1
+
 template <std::size_t N>
-void appendFace(std::string& out, const std::array<std::uint32_t, N>& corners, std::uint64_t verticesBefore) {
-  out += 'f';
+void appendFace(char*& out, const std::array<std::uint32_t, N>& corners) {
+  *out++ = 'f';
   for (const std::uint32_t v : corners) {
-    char digits[24];
-    const auto end = std::to_chars(digits, digits + sizeof digits, std::uint64_t{v} + verticesBefore + 1).ptr;  // OBJ counts from 1
-    const std::string_view index(digits, static_cast<std::size_t>(end - digits));
-    out += ' ';
-    out += index;
-    out += '/';
-    out += index;
-    out += '/';
-    out += index;
+    *out++ = ' ';
+    char* start = out;
+    appendIndex(out, v);
+    const std::size_t digits = static_cast<std::size_t>(out - start);
+    for (int k = 0; k < 2; ++k) {
+      *out++ = '/';
+      std::memcpy(out, start, digits);
+      out += digits;
+    }
   }
-  out += '\n';
+  *out++ = '\n';
 }
 
 // ---- reading ----
@@ -138,11 +137,16 @@ std::optional<Quad> joinTriangles(const Triangle& first, const Triangle& second)
 
 namespace {
 
-// What one part of an OBJ file holds: how many v, vt, vn and f lines, and how to print line i of each.
+// What one part of an OBJ file holds: how many v, vt, vn and f lines, and how to print line i of each (at most
+// kLineMax characters, at the pointer, which it moves past them).
 struct ObjLines {
   std::size_t count[4] = {0, 0, 0, 0};  // v, vt, vn, f
-  std::function<void(std::string&, std::size_t)> print[4];
+  std::function<void(char*&, std::size_t)> print[4];
 };
+
+// The longest line: a quad's four v/vt/vn corners of 20-digit numbers (v and vn lines are three floats of at most
+// 15 characters each).
+constexpr std::size_t kLineMax = 2 + 4 * (1 + 3 * 20 + 2) + 1;
 
 // `lines` after `preamble`. Printing the numbers is most of the work (a tree's OBJ is tens of megabytes): blocks of
 // lines are printed on every core in turn while this thread writes them out in file order.
@@ -155,13 +159,17 @@ void writeSections(const ObjLines& lines, std::ostream& stream, const std::strin
   std::vector<Block> blocks;
   for (int section = 0; section < 4; ++section)
     for (std::size_t i = 0; i < lines.count[section]; i += kLines) blocks.push_back({section, i, std::min(lines.count[section], i + kLines)});
-  // Longest lines: v and vn three shortest-round-trip floats, vt two, a quad four v/vt/vn triples of 7 digits.
-  constexpr std::size_t kLineBytes[4] = {48, 32, 48, 100};
-  auto print = [&](const Block& b, std::string& out) {
-    out.clear();
-    out.reserve((b.end - b.begin) * kLineBytes[b.section]);
+  // A block's text: room for its longest possible lines, left uninitialised (pages are touched only as written).
+  struct Text {
+    std::unique_ptr<char[]> data;
+    std::size_t size = 0;
+  };
+  auto print = [&](const Block& b, Text& out) {
+    if (!out.data) out.data.reset(new char[kLines * kLineMax]);
+    char* p = out.data.get();
     const auto& line = lines.print[b.section];
-    for (std::size_t i = b.begin; i < b.end; ++i) line(out, i);
+    for (std::size_t i = b.begin; i < b.end; ++i) line(p, i);
+    out.size = static_cast<std::size_t>(p - out.data.get());
   };
   stream.write(preamble.data(), static_cast<std::streamsize>(preamble.size()));
 
@@ -170,16 +178,16 @@ void writeSections(const ObjLines& lines, std::ostream& stream, const std::strin
   const unsigned cores = std::clamp(std::thread::hardware_concurrency(), 1u, 8u);
   const std::size_t workerCount = std::min<std::size_t>(cores, blocks.size());
   const std::size_t window = 2 * workerCount + 2;
-  std::vector<std::string> text(blocks.size());
+  std::vector<Text> text(blocks.size());
   std::vector<char> printed(blocks.size(), 0);
-  std::vector<std::string> spare;
+  std::vector<Text> spare;
   std::size_t written = 0;
   std::mutex mutex;
   std::condition_variable ready;
   std::atomic<std::size_t> next{0};
   auto work = [&] {
     for (std::size_t i = next++; i < blocks.size(); i = next++) {
-      std::string out;
+      Text out;
       {
         std::unique_lock<std::mutex> lock(mutex);
         ready.wait(lock, [&] { return i < written + window; });
@@ -198,13 +206,13 @@ void writeSections(const ObjLines& lines, std::ostream& stream, const std::strin
   std::vector<std::thread> workers;
   for (std::size_t w = 0; w < workerCount; ++w) workers.emplace_back(work);
   for (std::size_t i = 0; i < blocks.size(); ++i) {
-    std::string out;
+    Text out;
     {
       std::unique_lock<std::mutex> lock(mutex);
       ready.wait(lock, [&] { return printed[i] != 0; });
       out = std::move(text[i]);
     }
-    stream.write(out.data(), static_cast<std::streamsize>(out.size()));
+    stream.write(out.data.get(), static_cast<std::streamsize>(out.size));
     const std::lock_guard<std::mutex> lock(mutex);
     written = i + 1;
     spare.push_back(std::move(out));
@@ -215,15 +223,13 @@ void writeSections(const ObjLines& lines, std::ostream& stream, const std::strin
 
 glm::vec3 toAxes(const glm::vec3& p, Up up) { return up == Up::Y ? glm::vec3(p.x, p.z, -p.y) : p; }
 
-void appendCorner(std::string& out, std::uint64_t v, std::uint64_t vt, std::uint64_t vn) {
-  char digits[72];
-  char* end = std::to_chars(digits, digits + 24, v + 1).ptr;  // OBJ counts from 1
-  *end++ = '/';
-  end = std::to_chars(end, end + 24, vt + 1).ptr;
-  *end++ = '/';
-  end = std::to_chars(end, end + 24, vn + 1).ptr;
-  out += ' ';
-  out.append(digits, end);
+void appendCorner(char*& out, std::uint64_t v, std::uint64_t vt, std::uint64_t vn) {
+  *out++ = ' ';
+  appendIndex(out, v);
+  *out++ = '/';
+  appendIndex(out, vt);
+  *out++ = '/';
+  appendIndex(out, vn);
 }
 
 // Index of each value in `values` among its distinct values (first seen first), and those values: cards repeat
@@ -263,18 +269,18 @@ void writeObj(const QuadMesh& mesh, bool triangles, std::ostream& stream, Up up,
   ObjLines lines;
   for (int section = 0; section < 3; ++section) lines.count[section] = mesh.vertexCount();
   lines.count[3] = faceCount;
-  lines.print[0] = [&](std::string& out, std::size_t i) {
+  lines.print[0] = [&](char*& out, std::size_t i) {
     const glm::vec3 q = toAxes(mesh.positions[i], up);
     appendLine(out, "v", {q.x, q.y, q.z});
   };
-  lines.print[1] = [&](std::string& out, std::size_t i) { appendLine(out, "vt", {mesh.uvw[i].x, mesh.uvw[i].y}); };
-  lines.print[2] = [&](std::string& out, std::size_t i) {
+  lines.print[1] = [&](char*& out, std::size_t i) { appendLine(out, "vt", {mesh.uvw[i].x, mesh.uvw[i].y}); };
+  lines.print[2] = [&](char*& out, std::size_t i) {
     const glm::vec3 q = toAxes(mesh.normals[i], up);
     appendLine(out, "vn", {q.x, q.y, q.z});
   };
-  lines.print[3] = [&](std::string& out, std::size_t i) {
-    if (triangles) appendFace(out, triangleList[i], 0);
-    else appendFace(out, mesh.quads[i], 0);
+  lines.print[3] = [&](char*& out, std::size_t i) {
+    if (triangles) appendFace(out, triangleList[i]);
+    else appendFace(out, mesh.quads[i]);
   };
   writeSections(lines, stream, header);
 }
@@ -304,19 +310,19 @@ void writeObjCards(const CardMesh& cards, const std::string& object, const std::
   lines.count[1] = distinctTexcoords.size();
   lines.count[2] = distinctNormals.size();
   lines.count[3] = cards.quads.size();
-  lines.print[0] = [&](std::string& out, std::size_t i) {
+  lines.print[0] = [&](char*& out, std::size_t i) {
     const glm::vec3 q = toAxes(cards.positions[i], up);
     appendLine(out, "v", {q.x, q.y, q.z});
   };
-  lines.print[1] = [&](std::string& out, std::size_t i) { appendLine(out, "vt", {distinctTexcoords[i].x, distinctTexcoords[i].y}); };
-  lines.print[2] = [&](std::string& out, std::size_t i) {
+  lines.print[1] = [&](char*& out, std::size_t i) { appendLine(out, "vt", {distinctTexcoords[i].x, distinctTexcoords[i].y}); };
+  lines.print[2] = [&](char*& out, std::size_t i) {
     const glm::vec3 q = toAxes(distinctNormals[i], up);
     appendLine(out, "vn", {q.x, q.y, q.z});
   };
-  lines.print[3] = [&](std::string& out, std::size_t i) {
-    out += 'f';
+  lines.print[3] = [&](char*& out, std::size_t i) {
+    *out++ = 'f';
     for (const std::uint32_t c : cards.quads[i]) appendCorner(out, at.v + c, at.vt + vt[c], at.vn + vn[c]);
-    out += '\n';
+    *out++ = '\n';
   };
   writeSections(lines, stream, "o " + object + "\n" + (material.empty() ? std::string() : "usemtl " + material + "\n"));
   before.v += lines.count[0];
