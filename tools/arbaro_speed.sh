@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # XML -> OBJ process wall time, Arbaro 1.9.9 against Arbor, for every Arbaro species file (same file, same
-# seed, same machine; each the best of RUNS runs, taken in turn, since a shared machine's speed wanders). Arbaro is not packaged: build it from its public source (wdiestel/arbaro)
+# seed, same machine; each the best of RUNS runs, one tool's after the other's for each file). Arbaro is not packaged: build it from its public source (wdiestel/arbaro)
 # with javac and point ARBARO_CLASSES at the classes folder.
 # Usage: ARBARO_CLASSES=/path/to/classes [RUNS=3] tools/arbaro_speed.sh [SPECIES_DIR] [SEED]
 set -euo pipefail
@@ -20,9 +20,13 @@ printf '| file | Arbaro s | Arbor s | Arbaro / Arbor | Arbaro OBJ MB | Arbor OBJ
 for xml in "$species"/*.xml; do
   name="$(basename "$xml" .xml)"
   a=1e9; b=1e9
+  # Each tool's runs back to back: right after the JVM (a gigabyte of heap) has exited, the kernel compacts memory
+  # for Arbor's huge pages, which made Arbor's runs taken in turn with Arbaro's up to 1.6 times slower.
   for _ in $(seq "${RUNS:-3}"); do
     t=$(seconds java -cp "$ARBARO_CLASSES" net.sourceforge.arbaro.arbaro -q -s "$seed" -f OBJ -o "$out/$name-arbaro.obj" "$xml")
     a=$(least "$t" "$a")
+  done
+  for _ in $(seq "${RUNS:-3}"); do
     t=$(seconds "$arbor" generate "$xml" --seed "$seed" --out "$out/$name-arbor.obj" --quiet)
     b=$(least "$t" "$b")
   done
