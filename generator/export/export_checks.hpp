@@ -15,16 +15,20 @@ inline void requirePerVertex(const QuadMesh& mesh, std::size_t size, const char*
   }
 }
 
-// Throws std::invalid_argument when a quad refers past the last vertex.
-inline void requireQuadIndicesInRange(const QuadMesh& mesh, const char* context) {
-  for (std::size_t f = 0; f < mesh.quads.size(); ++f) {
-    for (const std::uint32_t v : mesh.quads[f]) {
-      if (v >= mesh.vertexCount()) {
+// Throws std::invalid_argument when a quad refers past the last of `vertices` vertices.
+inline void requireQuadIndicesInRange(const std::vector<std::array<std::uint32_t, 4>>& quads, std::size_t vertices, const char* context) {
+  for (std::size_t f = 0; f < quads.size(); ++f) {
+    for (const std::uint32_t v : quads[f]) {
+      if (v >= vertices) {
         throw std::invalid_argument(std::string(context) + ": quad " + std::to_string(f) + " refers to vertex " +
-                                    std::to_string(v) + " of " + std::to_string(mesh.vertexCount()));
+                                    std::to_string(v) + " of " + std::to_string(vertices));
       }
     }
   }
+}
+
+inline void requireQuadIndicesInRange(const QuadMesh& mesh, const char* context) {
+  requireQuadIndicesInRange(mesh.quads, mesh.vertexCount(), context);
 }
 
 }  // namespace arbor::exporting

@@ -221,7 +221,11 @@ void writeSections(const ObjLines& lines, std::ostream& stream, const std::strin
   for (std::thread& t : workers) t.join();
 }
 
-glm::vec3 toAxes(const glm::vec3& p, Up up) { return up == Up::Y ? glm::vec3(p.x, p.z, -p.y) : p; }
+// A position or normal line in the file's axes.
+void appendAxes(char*& out, const char* keyword, const glm::vec3& p, Up up) {
+  const glm::vec3 q = up == Up::Y ? glm::vec3(p.x, p.z, -p.y) : p;
+  appendLine(out, keyword, {q.x, q.y, q.z});
+}
 
 void appendCorner(char*& out, std::uint64_t v, std::uint64_t vt, std::uint64_t vn) {
   *out++ = ' ';
@@ -269,15 +273,9 @@ void writeObj(const QuadMesh& mesh, bool triangles, std::ostream& stream, Up up,
   ObjLines lines;
   for (int section = 0; section < 3; ++section) lines.count[section] = mesh.vertexCount();
   lines.count[3] = faceCount;
-  lines.print[0] = [&](char*& out, std::size_t i) {
-    const glm::vec3 q = toAxes(mesh.positions[i], up);
-    appendLine(out, "v", {q.x, q.y, q.z});
-  };
+  lines.print[0] = [&](char*& out, std::size_t i) { appendAxes(out, "v", mesh.positions[i], up); };
   lines.print[1] = [&](char*& out, std::size_t i) { appendLine(out, "vt", {mesh.uvw[i].x, mesh.uvw[i].y}); };
-  lines.print[2] = [&](char*& out, std::size_t i) {
-    const glm::vec3 q = toAxes(mesh.normals[i], up);
-    appendLine(out, "vn", {q.x, q.y, q.z});
-  };
+  lines.print[2] = [&](char*& out, std::size_t i) { appendAxes(out, "vn", mesh.normals[i], up); };
   lines.print[3] = [&](char*& out, std::size_t i) {
     if (triangles) appendFace(out, triangleList[i]);
     else appendFace(out, mesh.quads[i]);
@@ -293,10 +291,7 @@ std::string writeObj(const QuadMesh& mesh, bool triangles, Up up) {
 
 void writeObjCards(const CardMesh& cards, const std::string& object, const std::string& material, ObjCounts& before, std::ostream& stream,
                    Up up) {
-  QuadMesh check;  // the index check wants a mesh: positions and quads are all it looks at
-  check.positions = cards.positions;
-  check.quads = cards.quads;
-  exporting::requireQuadIndicesInRange(check, "writeObjCards");
+  exporting::requireQuadIndicesInRange(cards.quads, cards.positions.size(), "writeObjCards");
   // OBJ's v grows up the image, glTF's (and the cards') down it.
   std::vector<glm::vec2> texcoords(cards.texcoords.size());
   for (std::size_t i = 0; i < texcoords.size(); ++i) texcoords[i] = glm::vec2(cards.texcoords[i].x, 1.0f - cards.texcoords[i].y);
@@ -310,15 +305,9 @@ void writeObjCards(const CardMesh& cards, const std::string& object, const std::
   lines.count[1] = distinctTexcoords.size();
   lines.count[2] = distinctNormals.size();
   lines.count[3] = cards.quads.size();
-  lines.print[0] = [&](char*& out, std::size_t i) {
-    const glm::vec3 q = toAxes(cards.positions[i], up);
-    appendLine(out, "v", {q.x, q.y, q.z});
-  };
+  lines.print[0] = [&](char*& out, std::size_t i) { appendAxes(out, "v", cards.positions[i], up); };
   lines.print[1] = [&](char*& out, std::size_t i) { appendLine(out, "vt", {distinctTexcoords[i].x, distinctTexcoords[i].y}); };
-  lines.print[2] = [&](char*& out, std::size_t i) {
-    const glm::vec3 q = toAxes(distinctNormals[i], up);
-    appendLine(out, "vn", {q.x, q.y, q.z});
-  };
+  lines.print[2] = [&](char*& out, std::size_t i) { appendAxes(out, "vn", distinctNormals[i], up); };
   lines.print[3] = [&](char*& out, std::size_t i) {
     *out++ = 'f';
     for (const std::uint32_t c : cards.quads[i]) appendCorner(out, at.v + c, at.vt + vt[c], at.vn + vn[c]);

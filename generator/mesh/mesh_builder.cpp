@@ -46,7 +46,7 @@ struct PortStart {
   Vec3 grandPoint{0.0}, grandAxis{0.0};
   double grandReach = 0.0;
   // Texture v at the port, read from the parent's cross sections when the port is made: a sibling's neck adding
-  // to a shared corner later does not change it, so each child can be built apart from its siblings.
+  // to a shared corner later does not change it, so no child's texture depends on the order its siblings are built.
   double tex = 0.0;
 };
 
