@@ -99,8 +99,17 @@ void registerPartialForTest(const std::string& path) { static PartialFile keep(p
 }  // namespace detail
 
 std::string readFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
   if (!in) throw std::runtime_error(path + ": cannot be opened for reading");
+  // One read of the whole file where its size is known (a pipe's is not: then chunk by chunk).
+  const std::streamoff size = in.tellg();
+  if (size > 0) {
+    std::string content(static_cast<std::size_t>(size), '\0');
+    in.seekg(0);
+    if (in.read(content.data(), size) && in.peek() == std::char_traits<char>::eof()) return content;
+    in.clear();
+  }
+  in.seekg(0);
   std::ostringstream buffer;
   buffer << in.rdbuf();
   return buffer.str();
