@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <future>
+#include <utility>
 
 #include <glm/geometric.hpp>
 
@@ -166,46 +168,77 @@ std::vector<std::vector<glm::vec3>> leafPoses(const Skeleton& skeleton, const Tr
 
 }  // namespace
 
+namespace {
+
+// What a level of detail draws beside its bark: the cards of the stems it leaves out (and of stubs).
+struct LodCards {
+  int levels = 0;
+  std::vector<ImpostorSegment> segments;
+  CardMesh cards;
+};
+
+// The levels of detail's stem levels, finest first: each next one fakes one more level, the trunk always meshed.
+std::vector<int> lodLevelsOf(const Skeleton& skeleton, const TreeAssetOptions& options) {
+  const int levels = std::max(1, skeleton.levels);
+  const int meshed = options.mesh.levels > 0 ? std::min(options.mesh.levels, levels) : levels;
+  std::vector<int> result;
+  for (int lod = 0; lod < std::max(1, options.lods) && meshed - lod >= 1; ++lod) result.push_back(meshed - lod);
+  return result;
+}
+
+}  // namespace
+
 TreeAsset makeTreeAsset(const Skeleton& skeleton, const std::string& name, const TreeAssetOptions& options, std::shared_ptr<const TreeMesh> finest,
                         const std::function<void(const std::string&)>& progress) {
   TreeAsset asset;
   asset.name = name;
-  const int levels = std::max(1, skeleton.levels);
-  const int meshed = options.mesh.levels > 0 ? std::min(options.mesh.levels, levels) : levels;
+  const std::vector<int> lodLevels = lodLevelsOf(skeleton, options);
   const WindTree windTree = options.wind.on() ? WindTree{windHeight(skeleton), windPhase(skeleton)} : WindTree{};
-  for (int lod = 0; lod < std::max(1, options.lods); ++lod) {
-    const int lodLevels = meshed - lod;
-    if (lodLevels < 1) break;  // the trunk stays a mesh: no coarser level of detail than that
-    AssetLod level;
-    level.name = name + "_lod" + std::to_string(lod);
-    level.meshedLevels = lodLevels;
+  // Cards need only the skeleton: they are made on another core while this one meshes (a tenth of a large export).
+  std::future<std::pair<CardMesh, std::vector<LodCards>>> cardsMade = std::async(std::launch::async, [&] {
+    std::vector<LodCards> lodCards;
+    for (const int levels : lodLevels) {
+      LodCards c{levels, options.branchCards ? impostorSegments(skeleton, levels) : std::vector<ImpostorSegment>{}, {}};
+      c.cards = branchCards(c.segments);
+      lodCards.push_back(std::move(c));
+    }
+    return std::pair{options.leaves ? leafCards(skeleton.leaves) : CardMesh{}, std::move(lodCards)};
+  });
+  std::vector<std::shared_ptr<const TreeMesh>> cages;
+  for (std::size_t lod = 0; lod < lodLevels.size(); ++lod) {
     if (progress) {
-      progress("level of detail " + std::to_string(lod) + ": meshing stem levels 0-" + std::to_string(lodLevels - 1) +
+      progress("level of detail " + std::to_string(lod) + ": meshing stem levels 0-" + std::to_string(lodLevels[lod] - 1) +
                (options.subdivide > 0 ? ", " + std::to_string(options.subdivide) + " Catmull-Clark levels" : std::string()));
     }
     std::shared_ptr<const TreeMesh> coarse = finest;
     if (lod > 0 || finest == nullptr) {
       BuildOptions build;
       build.mesh = options.mesh;
-      build.mesh.levels = lodLevels;
+      build.mesh.levels = lodLevels[lod];
       build.patches = false;
       coarse = std::make_shared<const TreeMesh>(buildTree(skeleton, build).mesh);
     }
-    const TreeMesh& cage = *coarse;
+    AssetLod level;
+    level.name = name + "_lod" + std::to_string(lod);
+    level.meshedLevels = lodLevels[lod];
     // Unsubdivided, the bark is the coarse mesh itself, shared (a copy was a sixth of a large export's time).
-    level.bark = options.subdivide > 0 ? std::make_shared<const QuadMesh>(subdivide(cage.mesh, options.subdivide, options.mesh.maxQuads))
+    level.bark = options.subdivide > 0 ? std::make_shared<const QuadMesh>(subdivide(coarse->mesh, options.subdivide, options.mesh.maxQuads))
                                        : std::shared_ptr<const QuadMesh>(coarse, &coarse->mesh);
-    // Stubs are never meshed, so every level of detail has their cards too (wheat's grains).
-    const std::vector<ImpostorSegment> segments = options.branchCards ? impostorSegments(skeleton, lodLevels) : std::vector<ImpostorSegment>{};
-    level.branchCards = branchCards(segments);
-    if (options.wind.on()) {
-      if (progress) progress("level of detail " + std::to_string(lod) + ": " + std::to_string(options.windFrames) + " wind poses");
-      level.barkPoses = barkPoses(skeleton, cage, *level.bark, options, windTree);
-      level.branchCardPoses = branchCardPoses(skeleton, segments, options, windTree);
-    }
+    cages.push_back(std::move(coarse));
     asset.lods.push_back(std::move(level));
   }
-  if (options.leaves) asset.leaves = leafCards(skeleton.leaves);
+  auto [leaves, lodCards] = cardsMade.get();
+  asset.leaves = std::move(leaves);
+  // Stubs are never meshed, so every level of detail has their cards too (wheat's grains).
+  for (std::size_t lod = 0; lod < asset.lods.size(); ++lod) {
+    AssetLod& level = asset.lods[lod];
+    level.branchCards = std::move(lodCards[lod].cards);
+    if (options.wind.on()) {
+      if (progress) progress("level of detail " + std::to_string(lod) + ": " + std::to_string(options.windFrames) + " wind poses");
+      level.barkPoses = barkPoses(skeleton, *cages[lod], *level.bark, options, windTree);
+      level.branchCardPoses = branchCardPoses(skeleton, lodCards[lod].segments, options, windTree);
+    }
+  }
   if (options.wind.on()) {
     if (options.leaves) asset.leafPoses = leafPoses(skeleton, options, windTree);
     asset.windPeriod = options.wind.period();

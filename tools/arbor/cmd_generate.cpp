@@ -84,7 +84,10 @@ int runGenerate(const GenerateOptions& o) {
   const auto shared = std::make_shared<TreeMesh>();  // the export shares it (no copy of a large mesh)
   TreeMesh& tree = *shared;
   double meshMs = 0.0;
-  if (type != OutputType::Skeleton) {
+  // The summary needs the mesh before the export: then it is built here and shared. Quiet, the export builds it
+  // itself while it makes the cards on another core.
+  const bool meshHere = !o.quiet && type != OutputType::Skeleton;
+  if (meshHere) {
     tree = buildTree(skeleton, BuildOptions{o.mesh, false}).mesh;  // patches are counted on another core below
     meshMs = ms(t1, Clock::now());
   }
@@ -94,7 +97,7 @@ int runGenerate(const GenerateOptions& o) {
     PatchSet patches;
   };
   std::future<MeshSummary> summary;
-  if (!o.quiet && type != OutputType::Skeleton) {
+  if (meshHere) {
     summary = std::async(std::launch::async, [&tree] { return MeshSummary{checkTopology(tree.mesh), buildPatches(tree.mesh)}; });
   }
   if (type == OutputType::Skeleton) {
@@ -108,7 +111,7 @@ int runGenerate(const GenerateOptions& o) {
       progress("meshed " + std::to_string(tree.mesh.quads.size()) + " quads; subdividing " + std::to_string(o.subdivide) +
                " time(s) (about " + std::to_string(tree.mesh.quads.size() << (2 * o.subdivide)) + " quads at the finest level)");
     }
-    writeTreeFile(o.out, skeleton, source.name(), fileOptions, shared, progress);
+    writeTreeFile(o.out, skeleton, source.name(), fileOptions, meshHere ? shared : nullptr, progress);
   }
   if (o.quiet) return 0;
 

@@ -1,6 +1,7 @@
 #include "tree_file.hpp"
 
 #include <filesystem>
+#include <future>
 
 #include "asset_folder.hpp"
 #include "common/atomic_file.hpp"
@@ -44,8 +45,10 @@ void writeTreeFile(const std::string& path, const Skeleton& skeleton, const std:
   const bool obj = endsWith(path, ".obj");
   TreeAssetOptions assetOptions = options.asset;
   if (obj) assetOptions.lods = 1;
+  // The texture files are read while the tree is meshed.
+  std::future<AssetTextures> textures = std::async(std::launch::async, [&] { return options.textures ? exportTextures() : AssetTextures{}; });
   TreeAsset asset = makeTreeAsset(skeleton, name, assetOptions, std::move(finest), progress);
-  if (options.textures) asset.textures = exportTextures();
+  asset.textures = textures.get();
   if (progress) progress("writing " + path);
   if (!obj) {
     writeFileAtomically(path, endsWith(path, ".gltf") ? writeGltf(asset) : writeGlb(asset));
