@@ -684,9 +684,12 @@ TEST_CASE("OBJ of an asset: cards as objects after the surface, read back as the
   std::ostringstream out;
   writeObj(bark, false, out, Up::Y, "palm.mtl");
   ObjCounts counts{bark.vertexCount(), bark.vertexCount(), bark.vertexCount()};
-  writeObjCards(asset.lods[0].branchCards, "branch_cards", "branch_cards", counts, out);
+  if (!asset.lods[0].branchCards.empty()) writeObjCards(asset.lods[0].branchCards, "branch_cards", "branch_cards", counts, out);
   writeObjCards(asset.leaves, "leaves", "leaves", counts, out);
   const std::string text = out.str();
+  std::ostringstream once;
+  writeObjAsset(bark, asset.lods[0].branchCards, asset.leaves, false, once, Up::Y, "palm.mtl");
+  CHECK(once.str() == text);  // one pass over all three parts writes what the three calls write
   CHECK_THAT(text, Contains("\nmtllib palm.mtl\nusemtl bark\n") && Contains("\no leaves\nusemtl leaves\n"));
   std::size_t faces = 0;
   for (std::size_t at = text.find("\nf "); at != std::string::npos; at = text.find("\nf ", at + 1)) ++faces;
@@ -747,6 +750,30 @@ TEST_CASE("OBJ of an asset: cards as objects after the surface, read back as the
   const std::string mtl = writeMtl("c.png", "n.png", "a.png");
   CHECK_THAT(mtl, Contains("newmtl bark") && Contains("map_Kd c.png") && Contains("map_Bump -bm 1 n.png") &&
                       Contains("newmtl leaves") && Contains("map_d a.png"));
+}
+
+TEST_CASE("OBJ of an asset in one pass: the same text as its parts in turn, over many blocks, without materials", "[export][obj]") {
+  const Skeleton skeleton = growPreset("black-tupelo", 3);
+  TreeAssetOptions options;
+  options.mesh.levels = 2;  // level 2 becomes branch cards
+  const TreeAsset asset = makeTreeAsset(skeleton, "tupelo", options);
+  const QuadMesh& bark = *asset.lods[0].bark;
+  REQUIRE(asset.lods[0].branchCards.positions.size() > 8192);  // more lines than one printing block
+  REQUIRE(asset.leaves.positions.size() > 8192);
+  for (const bool triangles : {false, true}) {
+    std::ostringstream parts, once;
+    writeObj(bark, triangles, parts, Up::Z);
+    ObjCounts counts{bark.vertexCount(), bark.vertexCount(), bark.vertexCount()};
+    writeObjCards(asset.lods[0].branchCards, "branch_cards", "", counts, parts, Up::Z);
+    writeObjCards(asset.leaves, "leaves", "", counts, parts, Up::Z);
+    writeObjAsset(bark, asset.lods[0].branchCards, asset.leaves, triangles, once, Up::Z, "");
+    CHECK(once.str() == parts.str());
+    CHECK(once.str().find("usemtl") == std::string::npos);
+  }
+  std::ostringstream noCards, barkOnly;
+  writeObjAsset(bark, CardMesh{}, CardMesh{}, false, noCards, Up::Y, "");
+  writeObj(bark, false, barkOnly, Up::Y);
+  CHECK(noCards.str() == barkOnly.str());
 }
 
 TEST_CASE("wind animation: every part has one morph target per keyframe, one looping channel per level of detail, validator clean", "[export][gltf][validator][wind]") {

@@ -137,9 +137,11 @@ std::optional<Quad> joinTriangles(const Triangle& first, const Triangle& second)
 
 namespace {
 
-// What one part of an OBJ file holds: how many v, vt, vn and f lines, and how to print line i of each (at most
-// kLineMax characters, at the pointer, which it moves past them).
-struct ObjLines {
+// What one part of an OBJ file holds: the statements before its lines, how many v, vt, vn and f lines, and how to
+// print line i of each (at most kLineMax characters, at the pointer, which it moves past them). The printers own
+// (share) what they read, so a part outlives the function that made it.
+struct ObjPart {
+  std::string preamble;
   std::size_t count[4] = {0, 0, 0, 0};  // v, vt, vn, f
   std::function<void(char*&, std::size_t)> print[4];
 };
@@ -148,17 +150,21 @@ struct ObjLines {
 // 15 characters each).
 constexpr std::size_t kLineMax = 2 + 4 * (1 + 3 * 20 + 2) + 1;
 
-// `lines` after `preamble`. Printing the numbers is most of the work (a tree's OBJ is tens of megabytes): blocks of
-// lines are printed on every core in turn while this thread writes them out in file order.
-void writeSections(const ObjLines& lines, std::ostream& stream, const std::string& preamble) {
+// The parts in order. Printing the numbers is most of the work (a tree's OBJ is tens of megabytes): blocks of lines
+// are printed on every core in turn while this thread writes them out in file order, all parts in one pass (each
+// pass drains the cores at its end).
+void writeParts(const std::vector<ObjPart>& parts, std::ostream& stream) {
   struct Block {
+    std::size_t part;
     int section;  // 0 v, 1 vt, 2 vn, 3 f
     std::size_t begin, end;
   };
   constexpr std::size_t kLines = 8192;  // about a megabyte of text a block
   std::vector<Block> blocks;
-  for (int section = 0; section < 4; ++section)
-    for (std::size_t i = 0; i < lines.count[section]; i += kLines) blocks.push_back({section, i, std::min(lines.count[section], i + kLines)});
+  for (std::size_t part = 0; part < parts.size(); ++part)
+    for (int section = 0; section < 4; ++section)
+      for (std::size_t i = 0; i < parts[part].count[section]; i += kLines)
+        blocks.push_back({part, section, i, std::min(parts[part].count[section], i + kLines)});
   // A block's text: room for its longest possible lines, left uninitialised (pages are touched only as written).
   struct Text {
     std::unique_ptr<char[]> data;
@@ -167,11 +173,15 @@ void writeSections(const ObjLines& lines, std::ostream& stream, const std::strin
   auto print = [&](const Block& b, Text& out) {
     if (!out.data) out.data.reset(new char[kLines * kLineMax]);
     char* p = out.data.get();
-    const auto& line = lines.print[b.section];
+    const auto& line = parts[b.part].print[b.section];
     for (std::size_t i = b.begin; i < b.end; ++i) line(p, i);
     out.size = static_cast<std::size_t>(p - out.data.get());
   };
-  stream.write(preamble.data(), static_cast<std::streamsize>(preamble.size()));
+  std::size_t preambles = 0;  // parts whose preamble is out
+  auto preamblesUpTo = [&](std::size_t part) {
+    for (; preambles <= part && preambles < parts.size(); ++preambles)
+      stream.write(parts[preambles].preamble.data(), static_cast<std::streamsize>(parts[preambles].preamble.size()));
+  };
 
   // Workers print blocks at most `window` ahead of the writer into buffers it hands back: a few megabytes in
   // use whatever the file's size, each page touched once (fresh pages cost more than printing on a VM).
@@ -212,6 +222,7 @@ void writeSections(const ObjLines& lines, std::ostream& stream, const std::strin
       ready.wait(lock, [&] { return printed[i] != 0; });
       out = std::move(text[i]);
     }
+    preamblesUpTo(blocks[i].part);
     stream.write(out.data.get(), static_cast<std::streamsize>(out.size));
     const std::lock_guard<std::mutex> lock(mutex);
     written = i + 1;
@@ -219,6 +230,7 @@ void writeSections(const ObjLines& lines, std::ostream& stream, const std::strin
     ready.notify_all();
   }
   for (std::thread& t : workers) t.join();
+  preamblesUpTo(parts.size());
 }
 
 // A position or normal line in the file's axes.
@@ -237,15 +249,20 @@ void appendCorner(char*& out, std::uint64_t v, std::uint64_t vt, std::uint64_t v
 }
 
 // Index of each value in `values` among its distinct values (first seen first), and those values: cards repeat
-// their atlas corners and every corner of a card has the card's normal, so each is written once.
+// their atlas corners and every corner of a card has the card's normal, so each is written once. Most repeats are
+// of the corner before or the same corner of the card before: those are found without hashing.
 template <typename T>
 std::vector<std::uint32_t> distinctIndex(const std::vector<T>& values, std::vector<T>& distinct) {
   std::vector<std::uint32_t> index(values.size());
   std::unordered_map<std::string_view, std::uint32_t> seen;
   seen.reserve(values.size() / 4 + 16);
   for (std::size_t i = 0; i < values.size(); ++i) {
-    if (i > 0 && std::memcmp(&values[i], &values[i - 1], sizeof(T)) == 0) {  // a card's corners share one normal
+    if (i >= 1 && std::memcmp(&values[i], &values[i - 1], sizeof(T)) == 0) {
       index[i] = index[i - 1];
+      continue;
+    }
+    if (i >= 4 && std::memcmp(&values[i], &values[i - 4], sizeof(T)) == 0) {
+      index[i] = index[i - 4];
       continue;
     }
     const std::string_view key(reinterpret_cast<const char*>(&values[i]), sizeof(T));
@@ -256,31 +273,71 @@ std::vector<std::uint32_t> distinctIndex(const std::vector<T>& values, std::vect
   return index;
 }
 
+ObjPart barkPart(const QuadMesh& mesh, bool triangles, Up up, const std::string& mtlFile) {
+  exporting::requirePerVertex(mesh, mesh.normals.size(), "normals", "writeObj");
+  exporting::requirePerVertex(mesh, mesh.uvw.size(), "uvw", "writeObj");
+  exporting::requireQuadIndicesInRange(mesh, "writeObj");
+  const auto triangleList = std::make_shared<const std::vector<Triangle>>(triangles ? triangulate(mesh) : std::vector<Triangle>{});
+  const std::size_t faceCount = triangles ? triangleList->size() : mesh.quads.size();
+  ObjPart part;
+  part.preamble = std::string("# Arbor tree mesh: object space in metres, ") + (up == Up::Y ? "y up" : "z up") + "\n# " +
+                  std::to_string(mesh.vertexCount()) + " vertices, " + std::to_string(faceCount) + (triangles ? " triangles" : " quads") +
+                  "; vt is (u, v), the flip coordinate is not stored\n";
+  if (!mtlFile.empty()) part.preamble += "mtllib " + mtlFile + "\nusemtl bark\n";
+  for (int section = 0; section < 3; ++section) part.count[section] = mesh.vertexCount();
+  part.count[3] = faceCount;
+  const QuadMesh* m = &mesh;  // the caller's mesh outlives the writing
+  part.print[0] = [m, up](char*& out, std::size_t i) { appendAxes(out, "v", m->positions[i], up); };
+  part.print[1] = [m](char*& out, std::size_t i) { appendLine(out, "vt", {m->uvw[i].x, m->uvw[i].y}); };
+  part.print[2] = [m, up](char*& out, std::size_t i) { appendAxes(out, "vn", m->normals[i], up); };
+  part.print[3] = [m, triangles, triangleList](char*& out, std::size_t i) {
+    if (triangles) appendFace(out, (*triangleList)[i]);
+    else appendFace(out, m->quads[i]);
+  };
+  return part;
+}
+
+ObjPart cardsPart(const CardMesh& cards, const std::string& object, const std::string& material, ObjCounts& before, Up up) {
+  exporting::requireQuadIndicesInRange(cards.quads, cards.positions.size(), "writeObjCards");
+  // OBJ's v grows up the image, glTF's (and the cards') down it.
+  std::vector<glm::vec2> texcoords(cards.texcoords.size());
+  for (std::size_t i = 0; i < texcoords.size(); ++i) texcoords[i] = glm::vec2(cards.texcoords[i].x, 1.0f - cards.texcoords[i].y);
+  struct Distinct {
+    std::vector<glm::vec2> texcoords;
+    std::vector<glm::vec3> normals;
+    std::vector<std::uint32_t> vt, vn;
+  };
+  auto d = std::make_shared<Distinct>();
+  d->vt = distinctIndex(texcoords, d->texcoords);
+  d->vn = distinctIndex(cards.normals, d->normals);
+  ObjPart part;
+  part.preamble = "o " + object + "\n" + (material.empty() ? std::string() : "usemtl " + material + "\n");
+  part.count[0] = cards.positions.size();
+  part.count[1] = d->texcoords.size();
+  part.count[2] = d->normals.size();
+  part.count[3] = cards.quads.size();
+  const CardMesh* c = &cards;
+  const ObjCounts at = before;
+  part.print[0] = [c, up](char*& out, std::size_t i) { appendAxes(out, "v", c->positions[i], up); };
+  part.print[1] = [d](char*& out, std::size_t i) { appendLine(out, "vt", {d->texcoords[i].x, d->texcoords[i].y}); };
+  part.print[2] = [d, up](char*& out, std::size_t i) { appendAxes(out, "vn", d->normals[i], up); };
+  part.print[3] = [c, d, at](char*& out, std::size_t i) {
+    *out++ = 'f';
+    for (const std::uint32_t k : c->quads[i]) appendCorner(out, at.v + k, at.vt + d->vt[k], at.vn + d->vn[k]);
+    *out++ = '\n';
+  };
+  before.v += part.count[0];
+  before.vt += part.count[1];
+  before.vn += part.count[2];
+  return part;
+}
+
 }  // namespace
 
 void writeObj(const QuadMesh& mesh, bool triangles, std::ostream& stream, Up up) { writeObj(mesh, triangles, stream, up, {}); }
 
 void writeObj(const QuadMesh& mesh, bool triangles, std::ostream& stream, Up up, const std::string& mtlFile) {
-  exporting::requirePerVertex(mesh, mesh.normals.size(), "normals", "writeObj");
-  exporting::requirePerVertex(mesh, mesh.uvw.size(), "uvw", "writeObj");
-  exporting::requireQuadIndicesInRange(mesh, "writeObj");
-  const auto triangleList = triangles ? triangulate(mesh) : std::vector<Triangle>{};
-  const std::size_t faceCount = triangles ? triangleList.size() : mesh.quads.size();
-  std::string header = std::string("# Arbor tree mesh: object space in metres, ") + (up == Up::Y ? "y up" : "z up") + "\n# " +
-                       std::to_string(mesh.vertexCount()) + " vertices, " + std::to_string(faceCount) + (triangles ? " triangles" : " quads") +
-                       "; vt is (u, v), the flip coordinate is not stored\n";
-  if (!mtlFile.empty()) header += "mtllib " + mtlFile + "\nusemtl bark\n";
-  ObjLines lines;
-  for (int section = 0; section < 3; ++section) lines.count[section] = mesh.vertexCount();
-  lines.count[3] = faceCount;
-  lines.print[0] = [&](char*& out, std::size_t i) { appendAxes(out, "v", mesh.positions[i], up); };
-  lines.print[1] = [&](char*& out, std::size_t i) { appendLine(out, "vt", {mesh.uvw[i].x, mesh.uvw[i].y}); };
-  lines.print[2] = [&](char*& out, std::size_t i) { appendAxes(out, "vn", mesh.normals[i], up); };
-  lines.print[3] = [&](char*& out, std::size_t i) {
-    if (triangles) appendFace(out, triangleList[i]);
-    else appendFace(out, mesh.quads[i]);
-  };
-  writeSections(lines, stream, header);
+  writeParts({barkPart(mesh, triangles, up, mtlFile)}, stream);
 }
 
 std::string writeObj(const QuadMesh& mesh, bool triangles, Up up) {
@@ -291,32 +348,18 @@ std::string writeObj(const QuadMesh& mesh, bool triangles, Up up) {
 
 void writeObjCards(const CardMesh& cards, const std::string& object, const std::string& material, ObjCounts& before, std::ostream& stream,
                    Up up) {
-  exporting::requireQuadIndicesInRange(cards.quads, cards.positions.size(), "writeObjCards");
-  // OBJ's v grows up the image, glTF's (and the cards') down it.
-  std::vector<glm::vec2> texcoords(cards.texcoords.size());
-  for (std::size_t i = 0; i < texcoords.size(); ++i) texcoords[i] = glm::vec2(cards.texcoords[i].x, 1.0f - cards.texcoords[i].y);
-  std::vector<glm::vec2> distinctTexcoords;
-  std::vector<glm::vec3> distinctNormals;
-  const std::vector<std::uint32_t> vt = distinctIndex(texcoords, distinctTexcoords);
-  const std::vector<std::uint32_t> vn = distinctIndex(cards.normals, distinctNormals);
-  const ObjCounts at = before;
-  ObjLines lines;
-  lines.count[0] = cards.positions.size();
-  lines.count[1] = distinctTexcoords.size();
-  lines.count[2] = distinctNormals.size();
-  lines.count[3] = cards.quads.size();
-  lines.print[0] = [&](char*& out, std::size_t i) { appendAxes(out, "v", cards.positions[i], up); };
-  lines.print[1] = [&](char*& out, std::size_t i) { appendLine(out, "vt", {distinctTexcoords[i].x, distinctTexcoords[i].y}); };
-  lines.print[2] = [&](char*& out, std::size_t i) { appendAxes(out, "vn", distinctNormals[i], up); };
-  lines.print[3] = [&](char*& out, std::size_t i) {
-    *out++ = 'f';
-    for (const std::uint32_t c : cards.quads[i]) appendCorner(out, at.v + c, at.vt + vt[c], at.vn + vn[c]);
-    *out++ = '\n';
-  };
-  writeSections(lines, stream, "o " + object + "\n" + (material.empty() ? std::string() : "usemtl " + material + "\n"));
-  before.v += lines.count[0];
-  before.vt += lines.count[1];
-  before.vn += lines.count[2];
+  writeParts({cardsPart(cards, object, material, before, up)}, stream);
+}
+
+void writeObjAsset(const QuadMesh& bark, const CardMesh& branchCards, const CardMesh& leaves, bool triangles, std::ostream& stream, Up up,
+                   const std::string& mtlFile) {
+  std::vector<ObjPart> parts;
+  parts.push_back(barkPart(bark, triangles, up, mtlFile));
+  ObjCounts counts{bark.vertexCount(), bark.vertexCount(), bark.vertexCount()};
+  const bool materials = !mtlFile.empty();
+  if (!branchCards.empty()) parts.push_back(cardsPart(branchCards, "branch_cards", materials ? "branch_cards" : "", counts, up));
+  if (!leaves.empty()) parts.push_back(cardsPart(leaves, "leaves", materials ? "leaves" : "", counts, up));
+  writeParts(parts, stream);
 }
 
 std::string writeMtl(const std::string& barkColor, const std::string& barkNormal, const std::string& leafAtlas) {

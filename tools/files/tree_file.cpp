@@ -70,11 +70,7 @@ void writeTreeFile(const std::string& path, const Skeleton& skeleton, const std:
   }
   const AssetLod& lod = asset.lods.front();
   writeFileAtomically(path, [&](std::ostream& out) {
-    writeObj(*lod.bark, options.file.triangles, out, options.file.up, mtl);
-    const std::uint64_t barkVertices = lod.bark->vertexCount();
-    ObjCounts counts{barkVertices, barkVertices, barkVertices};
-    if (!lod.branchCards.empty()) writeObjCards(lod.branchCards, "branch_cards", mtl.empty() ? "" : "branch_cards", counts, out, options.file.up);
-    if (!asset.leaves.empty()) writeObjCards(asset.leaves, "leaves", mtl.empty() ? "" : "leaves", counts, out, options.file.up);
+    writeObjAsset(*lod.bark, lod.branchCards, asset.leaves, options.file.triangles, out, options.file.up, mtl);
   });
 }
 
