@@ -2,6 +2,7 @@
 // subdivision keeps the mesh closed, oriented and on the limit surface it should be on.
 // The meshes are built here (a cube and a capped tube) so these tests do not depend on the mesh builder.
 #include <catch2/catch.hpp>
+#include <array>
 #include <sstream>
 #include <cmath>
 #include <cstdio>
@@ -770,6 +771,49 @@ TEST_CASE("OBJ of an asset in one pass: the same text as its parts in turn, over
     CHECK(once.str() == parts.str());
     CHECK(once.str().find("usemtl") == std::string::npos);
   }
+  // Every card corner reads back as its own texture coordinate and normal through the shared vt and vn lines
+  // (tens of thousands of distinct leaf normals: the dedup table grows many times).
+  std::ostringstream file;
+  writeObjAsset(bark, asset.lods[0].branchCards, asset.leaves, false, file, Up::Z, "");  // the tree's own axes
+  std::vector<glm::vec2> vt;
+  std::vector<glm::vec3> vn;
+  std::vector<std::array<std::uint64_t, 12>> faces;  // v/vt/vn of the four corners
+  std::istringstream lines(file.str());
+  for (std::string line; std::getline(lines, line);) {
+    if (line.rfind("vt ", 0) == 0) {
+      glm::vec2 t;
+      REQUIRE(std::sscanf(line.c_str(), "vt %f %f", &t.x, &t.y) == 2);
+      vt.push_back(t);
+    } else if (line.rfind("vn ", 0) == 0) {
+      glm::vec3 n;
+      REQUIRE(std::sscanf(line.c_str(), "vn %f %f %f", &n.x, &n.y, &n.z) == 3);
+      vn.push_back(n);
+    } else if (line.rfind("f ", 0) == 0 && line.find('/') != std::string::npos) {
+      std::array<std::uint64_t, 12> f{};
+      if (std::sscanf(line.c_str(), "f %lu/%lu/%lu %lu/%lu/%lu %lu/%lu/%lu %lu/%lu/%lu", &f[0], &f[1], &f[2], &f[3], &f[4], &f[5], &f[6], &f[7],
+                      &f[8], &f[9], &f[10], &f[11]) == 12)
+        faces.push_back(f);
+    }
+  }
+  const std::size_t barkVertices = bark.vertexCount();
+  std::size_t cardCorners = 0, wrong = 0;
+  for (const std::array<std::uint64_t, 12>& f : faces) {
+    if (f[0] <= barkVertices) continue;  // a bark quad
+    for (int k = 0; k < 4; ++k) {
+      const std::uint64_t v = f[3 * k] - 1 - barkVertices;
+      const bool leaf = v >= asset.lods[0].branchCards.positions.size();
+      const CardMesh& cards = leaf ? asset.leaves : asset.lods[0].branchCards;
+      const std::size_t corner = leaf ? v - asset.lods[0].branchCards.positions.size() : v;
+      const glm::vec2 t = vt[f[3 * k + 1] - 1];
+      const glm::vec3 n = vn[f[3 * k + 2] - 1];
+      wrong += (t != glm::vec2(cards.texcoords[corner].x, 1.0f - cards.texcoords[corner].y) || n != cards.normals[corner]) ? 1 : 0;
+      ++cardCorners;
+    }
+  }
+  CHECK(cardCorners == asset.lods[0].branchCards.positions.size() + asset.leaves.positions.size());
+  CHECK(wrong == 0);
+  CHECK(vn.size() - barkVertices > 8192);
+
   std::ostringstream noCards, barkOnly;
   writeObjAsset(bark, CardMesh{}, CardMesh{}, false, noCards, Up::Y, "");
   writeObj(bark, false, barkOnly, Up::Y);

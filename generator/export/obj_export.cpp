@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cstring>
 #include <functional>
-#include <unordered_map>
 #include <charconv>
 #include <cstdint>
 #include <initializer_list>
@@ -250,25 +249,47 @@ void appendCorner(char*& out, std::uint64_t v, std::uint64_t vt, std::uint64_t v
 
 // Index of each value in `values` among its distinct values (first seen first), and those values: cards repeat
 // their atlas corners and every corner of a card has the card's normal, so each is written once. Most repeats are
-// of the corner before or the same corner of the card before: those are found without hashing.
+// of the corner before or the same corner of the card before: those are found without hashing; the rest in an
+// open-addressed table of indices into `distinct` (a node per value of a willow's leaves was a tenth of its export).
 template <typename T>
 std::vector<std::uint32_t> distinctIndex(const std::vector<T>& values, std::vector<T>& distinct) {
+  static_assert(sizeof(T) % sizeof(std::uint32_t) == 0, "hashed as 32-bit words");
+  constexpr std::uint32_t kEmpty = ~0u;
+  auto hash = [](const T& value) {
+    std::uint32_t words[sizeof(T) / sizeof(std::uint32_t)];
+    std::memcpy(words, &value, sizeof(T));
+    std::uint64_t h = 0x9E3779B97F4A7C15ull;
+    for (const std::uint32_t w : words) h = (h ^ w) * 0xFF51AFD7ED558CCDull;  // bits, so -0 and 0 stay apart as before
+    return h ^ (h >> 29);
+  };
+  auto same = [](const T& a, const T& b) { return std::memcmp(&a, &b, sizeof(T)) == 0; };
+  std::vector<std::uint32_t> table(64, kEmpty);  // a power of two, at most half full
+  auto slotOf = [&](const T& value) {
+    std::size_t slot = hash(value) & (table.size() - 1);
+    while (table[slot] != kEmpty && !same(distinct[table[slot]], value)) slot = (slot + 1) & (table.size() - 1);
+    return slot;
+  };
   std::vector<std::uint32_t> index(values.size());
-  std::unordered_map<std::string_view, std::uint32_t> seen;
-  seen.reserve(values.size() / 4 + 16);
   for (std::size_t i = 0; i < values.size(); ++i) {
-    if (i >= 1 && std::memcmp(&values[i], &values[i - 1], sizeof(T)) == 0) {
+    if (i >= 1 && same(values[i], values[i - 1])) {
       index[i] = index[i - 1];
       continue;
     }
-    if (i >= 4 && std::memcmp(&values[i], &values[i - 4], sizeof(T)) == 0) {
+    if (i >= 4 && same(values[i], values[i - 4])) {
       index[i] = index[i - 4];
       continue;
     }
-    const std::string_view key(reinterpret_cast<const char*>(&values[i]), sizeof(T));
-    const auto [it, added] = seen.emplace(key, static_cast<std::uint32_t>(distinct.size()));
-    if (added) distinct.push_back(values[i]);
-    index[i] = it->second;
+    std::size_t slot = slotOf(values[i]);
+    if (table[slot] == kEmpty) {
+      if (2 * (distinct.size() + 1) > table.size()) {
+        table.assign(2 * table.size(), kEmpty);
+        for (std::uint32_t d = 0; d < distinct.size(); ++d) table[slotOf(distinct[d])] = d;
+        slot = slotOf(values[i]);
+      }
+      table[slot] = static_cast<std::uint32_t>(distinct.size());
+      distinct.push_back(values[i]);
+    }
+    index[i] = table[slot];
   }
   return index;
 }
