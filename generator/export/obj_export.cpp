@@ -145,9 +145,10 @@ struct ObjPart {
   std::function<void(char*&, std::size_t)> print[4];
 };
 
-// The longest line: a quad's four v/vt/vn corners of 20-digit numbers (v and vn lines are three floats of at most
-// 15 characters each).
+// The longest line: a quad's four v/vt/vn corners of 20-digit numbers; a v, vt or vn line, at most three floats of
+// at most 15 characters each.
 constexpr std::size_t kLineMax = 2 + 4 * (1 + 3 * 20 + 2) + 1;
+constexpr std::size_t kNumbersLineMax = 3 + 3 * (1 + 15) + 1;
 
 // The parts in order. Printing the numbers is most of the work (a tree's OBJ is tens of megabytes): blocks of lines
 // are printed on every core in turn while this thread writes them out in file order, all parts in one pass (each
@@ -158,19 +159,23 @@ void writeParts(const std::vector<ObjPart>& parts, std::ostream& stream) {
     int section;  // 0 v, 1 vt, 2 vn, 3 f
     std::size_t begin, end;
   };
-  constexpr std::size_t kLines = 8192;  // about a megabyte of text a block
+  // Room for half a megabyte of a block's longest possible lines (8,192 number lines, 2,000 faces): buffers smaller
+  // than a huge page, which is cleared whole when first touched however little of it is written.
+  constexpr std::size_t kBlockBytes = std::size_t{512} << 10;
   std::vector<Block> blocks;
   for (std::size_t part = 0; part < parts.size(); ++part)
-    for (int section = 0; section < 4; ++section)
-      for (std::size_t i = 0; i < parts[part].count[section]; i += kLines)
-        blocks.push_back({part, section, i, std::min(parts[part].count[section], i + kLines)});
+    for (int section = 0; section < 4; ++section) {
+      const std::size_t lines = kBlockBytes / (section == 3 ? kLineMax : kNumbersLineMax);
+      for (std::size_t i = 0; i < parts[part].count[section]; i += lines)
+        blocks.push_back({part, section, i, std::min(parts[part].count[section], i + lines)});
+    }
   // A block's text: room for its longest possible lines, left uninitialised (pages are touched only as written).
   struct Text {
     std::unique_ptr<char[]> data;
     std::size_t size = 0;
   };
   auto print = [&](const Block& b, Text& out) {
-    if (!out.data) out.data.reset(new char[kLines * kLineMax]);
+    if (!out.data) out.data.reset(new char[kBlockBytes]);
     char* p = out.data.get();
     const auto& line = parts[b.part].print[b.section];
     for (std::size_t i = b.begin; i < b.end; ++i) line(p, i);
