@@ -689,8 +689,18 @@ TEST_CASE("OBJ of an asset: cards as objects after the surface, read back as the
   writeObjCards(asset.leaves, "leaves", "leaves", counts, out);
   const std::string text = out.str();
   std::ostringstream once;
-  writeObjAsset(bark, asset.lods[0].branchCards, asset.leaves, false, once, Up::Y, "palm.mtl");
+  writeObjAsset(bark, asset.lods[0].branchCards, skeleton.leaves, false, once, Up::Y, "palm.mtl");
   CHECK(once.str() == text);  // one pass over all three parts writes what the three calls write
+  // Leaves of every kind, mixed, and kinds past the atlas's four (drawn as the last): the texture coordinates
+  // of the cards made while printing are numbered as writeObjCards numbers leafCards' (kinds share corners).
+  std::vector<Leaf> mixed = skeleton.leaves;
+  for (std::size_t i = 0; i < mixed.size(); ++i) mixed[i].kind = static_cast<std::uint8_t>((i * 5 + i / 7) % 9);
+  std::ostringstream mixedParts, mixedOnce;
+  writeObj(bark, false, mixedParts, Up::Y, "palm.mtl");
+  ObjCounts mixedCounts{bark.vertexCount(), bark.vertexCount(), bark.vertexCount()};
+  writeObjCards(leafCards(mixed), "leaves", "leaves", mixedCounts, mixedParts);
+  writeObjAsset(bark, CardMesh{}, mixed, false, mixedOnce, Up::Y, "palm.mtl");
+  CHECK(mixedOnce.str() == mixedParts.str());
   CHECK_THAT(text, Contains("\nmtllib palm.mtl\nusemtl bark\n") && Contains("\no leaves\nusemtl leaves\n"));
   std::size_t faces = 0;
   for (std::size_t at = text.find("\nf "); at != std::string::npos; at = text.find("\nf ", at + 1)) ++faces;
@@ -767,14 +777,14 @@ TEST_CASE("OBJ of an asset in one pass: the same text as its parts in turn, over
     ObjCounts counts{bark.vertexCount(), bark.vertexCount(), bark.vertexCount()};
     writeObjCards(asset.lods[0].branchCards, "branch_cards", "", counts, parts, Up::Z);
     writeObjCards(asset.leaves, "leaves", "", counts, parts, Up::Z);
-    writeObjAsset(bark, asset.lods[0].branchCards, asset.leaves, triangles, once, Up::Z, "");
+    writeObjAsset(bark, asset.lods[0].branchCards, skeleton.leaves, triangles, once, Up::Z, "");
     CHECK(once.str() == parts.str());
     CHECK(once.str().find("usemtl") == std::string::npos);
   }
   // Every card corner reads back as its own texture coordinate and normal through the shared vt and vn lines
   // (tens of thousands of distinct leaf normals: the dedup table grows many times).
   std::ostringstream file;
-  writeObjAsset(bark, asset.lods[0].branchCards, asset.leaves, false, file, Up::Z, "");  // the tree's own axes
+  writeObjAsset(bark, asset.lods[0].branchCards, skeleton.leaves, false, file, Up::Z, "");  // the tree's own axes
   std::vector<glm::vec2> vt;
   std::vector<glm::vec3> vn;
   std::vector<std::array<std::uint64_t, 12>> faces;  // v/vt/vn of the four corners
@@ -815,7 +825,7 @@ TEST_CASE("OBJ of an asset in one pass: the same text as its parts in turn, over
   CHECK(vn.size() - barkVertices > 8192);
 
   std::ostringstream noCards, barkOnly;
-  writeObjAsset(bark, CardMesh{}, CardMesh{}, false, noCards, Up::Y, "");
+  writeObjAsset(bark, CardMesh{}, std::vector<Leaf>{}, false, noCards, Up::Y, "");
   writeObj(bark, false, barkOnly, Up::Y);
   CHECK(noCards.str() == barkOnly.str());
 }

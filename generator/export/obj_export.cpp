@@ -1,6 +1,7 @@
 #include "obj_export.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cstring>
 #include <functional>
 #include <charconv>
@@ -136,13 +137,23 @@ std::optional<Quad> joinTriangles(const Triangle& first, const Triangle& second)
 
 namespace {
 
+// Prints lines [begin, end) of one section at the pointer (at most kLineMax characters each), moving it past them.
+using LinePrinter = std::function<void(char*& out, std::size_t begin, std::size_t end)>;
+
+// A printer of one line at a time.
+template <typename PrintLine>
+LinePrinter eachLine(PrintLine line) {
+  return [line](char*& out, std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) line(out, i);
+  };
+}
+
 // What one part of an OBJ file holds: the statements before its lines, how many v, vt, vn and f lines, and how to
-// print line i of each (at most kLineMax characters, at the pointer, which it moves past them). The printers own
-// (share) what they read, so a part outlives the function that made it.
+// print them. The printers own (share) what they read, so a part outlives the function that made it.
 struct ObjPart {
   std::string preamble;
   std::size_t count[4] = {0, 0, 0, 0};  // v, vt, vn, f
-  std::function<void(char*&, std::size_t)> print[4];
+  LinePrinter print[4];
 };
 
 // The longest line: a quad's four v/vt/vn corners of 20-digit numbers; a v, vt or vn line, at most three floats of
@@ -177,8 +188,7 @@ void writeParts(const std::vector<ObjPart>& parts, std::ostream& stream) {
   auto print = [&](const Block& b, Text& out) {
     if (!out.data) out.data.reset(new char[kBlockBytes]);
     char* p = out.data.get();
-    const auto& line = parts[b.part].print[b.section];
-    for (std::size_t i = b.begin; i < b.end; ++i) line(p, i);
+    parts[b.part].print[b.section](p, b.begin, b.end);
     out.size = static_cast<std::size_t>(p - out.data.get());
   };
   std::size_t preambles = 0;  // parts whose preamble is out
@@ -313,13 +323,13 @@ ObjPart barkPart(const QuadMesh& mesh, bool triangles, Up up, const std::string&
   for (int section = 0; section < 3; ++section) part.count[section] = mesh.vertexCount();
   part.count[3] = faceCount;
   const QuadMesh* m = &mesh;  // the caller's mesh outlives the writing
-  part.print[0] = [m, up](char*& out, std::size_t i) { appendAxes(out, "v", m->positions[i], up); };
-  part.print[1] = [m](char*& out, std::size_t i) { appendLine(out, "vt", {m->uvw[i].x, m->uvw[i].y}); };
-  part.print[2] = [m, up](char*& out, std::size_t i) { appendAxes(out, "vn", m->normals[i], up); };
-  part.print[3] = [m, triangles, triangleList](char*& out, std::size_t i) {
+  part.print[0] = eachLine([m, up](char*& out, std::size_t i) { appendAxes(out, "v", m->positions[i], up); });
+  part.print[1] = eachLine([m](char*& out, std::size_t i) { appendLine(out, "vt", {m->uvw[i].x, m->uvw[i].y}); });
+  part.print[2] = eachLine([m, up](char*& out, std::size_t i) { appendAxes(out, "vn", m->normals[i], up); });
+  part.print[3] = eachLine([m, triangles, triangleList](char*& out, std::size_t i) {
     if (triangles) appendFace(out, (*triangleList)[i]);
     else appendFace(out, m->quads[i]);
-  };
+  });
   return part;
 }
 
@@ -344,14 +354,70 @@ ObjPart cardsPart(const CardMesh& cards, const std::string& object, const std::s
   part.count[3] = cards.quads.size();
   const CardMesh* c = &cards;
   const ObjCounts at = before;
-  part.print[0] = [c, up](char*& out, std::size_t i) { appendAxes(out, "v", c->positions[i], up); };
-  part.print[1] = [d](char*& out, std::size_t i) { appendLine(out, "vt", {d->texcoords[i].x, d->texcoords[i].y}); };
-  part.print[2] = [d, up](char*& out, std::size_t i) { appendAxes(out, "vn", d->normals[i], up); };
-  part.print[3] = [c, d, at](char*& out, std::size_t i) {
+  part.print[0] = eachLine([c, up](char*& out, std::size_t i) { appendAxes(out, "v", c->positions[i], up); });
+  part.print[1] = eachLine([d](char*& out, std::size_t i) { appendLine(out, "vt", {d->texcoords[i].x, d->texcoords[i].y}); });
+  part.print[2] = eachLine([d, up](char*& out, std::size_t i) { appendAxes(out, "vn", d->normals[i], up); });
+  part.print[3] = eachLine([c, d, at](char*& out, std::size_t i) {
     *out++ = 'f';
     for (const std::uint32_t k : c->quads[i]) appendCorner(out, at.v + k, at.vt + d->vt[k], at.vn + d->vn[k]);
     *out++ = '\n';
+  });
+  before.v += part.count[0];
+  before.vt += part.count[1];
+  before.vn += part.count[2];
+  return part;
+}
+
+// cardsPart of leafCards(leaves) without making them: each card is made as its corners are printed (a willow's
+// 250,000 leaf cards were 52 MB of fresh memory). The same lines: a card's corners share its normal, and a
+// corner's texture coordinate depends only on the leaf's kind, so both are numbered in the same first-seen order.
+ObjPart leavesPart(const std::vector<Leaf>& leaves, const std::string& material, ObjCounts& before, Up up) {
+  struct Distinct {
+    std::vector<glm::vec2> texcoords;
+    std::vector<glm::vec3> normals;
+    std::array<std::uint32_t, 256 * 4> vt{};  // per leaf kind and corner
+    std::vector<std::uint32_t> vn;            // per leaf
   };
+  auto d = std::make_shared<Distinct>();
+  std::vector<glm::vec3> normals(leaves.size());
+  std::array<bool, 256 * 4> seen{};
+  for (std::size_t i = 0; i < leaves.size(); ++i) {
+    const LeafCard card = leafCard(leaves[i]);
+    normals[i] = card.normal;
+    for (std::size_t k = 0; k < 4; ++k) {
+      const std::size_t key = 4 * std::size_t{leaves[i].kind} + k;
+      if (seen[key]) continue;
+      seen[key] = true;
+      // OBJ's v grows up the image, glTF's (and the cards') down it.
+      const glm::vec2 t(card.texcoords[k].x, 1.0f - card.texcoords[k].y);
+      const auto found = std::find_if(d->texcoords.begin(), d->texcoords.end(), [&](const glm::vec2& u) { return std::memcmp(&u, &t, sizeof t) == 0; });
+      d->vt[key] = static_cast<std::uint32_t>(found - d->texcoords.begin());
+      if (found == d->texcoords.end()) d->texcoords.push_back(t);
+    }
+  }
+  d->vn = distinctIndex(normals, d->normals);
+  ObjPart part;
+  part.preamble = "o leaves\n" + (material.empty() ? std::string() : "usemtl " + material + "\n");
+  part.count[0] = 4 * leaves.size();
+  part.count[1] = d->texcoords.size();
+  part.count[2] = d->normals.size();
+  part.count[3] = leaves.size();
+  const std::vector<Leaf>* l = &leaves;  // the caller's leaves outlive the writing
+  part.print[0] = [l, up](char*& out, std::size_t begin, std::size_t end) {
+    LeafCard card{};
+    for (std::size_t i = begin; i < end; ++i) {
+      if (i == begin || i % 4 == 0) card = leafCard((*l)[i / 4]);
+      appendAxes(out, "v", card.corners[i % 4], up);
+    }
+  };
+  part.print[1] = eachLine([d](char*& out, std::size_t i) { appendLine(out, "vt", {d->texcoords[i].x, d->texcoords[i].y}); });
+  part.print[2] = eachLine([d, up](char*& out, std::size_t i) { appendAxes(out, "vn", d->normals[i], up); });
+  const ObjCounts at = before;
+  part.print[3] = eachLine([l, d, at](char*& out, std::size_t i) {
+    *out++ = 'f';
+    for (std::size_t k = 0; k < 4; ++k) appendCorner(out, at.v + 4 * i + k, at.vt + d->vt[4 * std::size_t{(*l)[i].kind} + k], at.vn + d->vn[i]);
+    *out++ = '\n';
+  });
   before.v += part.count[0];
   before.vt += part.count[1];
   before.vn += part.count[2];
@@ -377,14 +443,14 @@ void writeObjCards(const CardMesh& cards, const std::string& object, const std::
   writeParts({cardsPart(cards, object, material, before, up)}, stream);
 }
 
-void writeObjAsset(const QuadMesh& bark, const CardMesh& branchCards, const CardMesh& leaves, bool triangles, std::ostream& stream, Up up,
-                   const std::string& mtlFile) {
+void writeObjAsset(const QuadMesh& bark, const CardMesh& branchCards, const std::vector<Leaf>& leaves, bool triangles, std::ostream& stream,
+                   Up up, const std::string& mtlFile) {
   std::vector<ObjPart> parts;
   parts.push_back(barkPart(bark, triangles, up, mtlFile));
   ObjCounts counts{bark.vertexCount(), bark.vertexCount(), bark.vertexCount()};
   const bool materials = !mtlFile.empty();
   if (!branchCards.empty()) parts.push_back(cardsPart(branchCards, "branch_cards", materials ? "branch_cards" : "", counts, up));
-  if (!leaves.empty()) parts.push_back(cardsPart(leaves, "leaves", materials ? "leaves" : "", counts, up));
+  if (!leaves.empty()) parts.push_back(leavesPart(leaves, materials ? "leaves" : "", counts, up));
   writeParts(parts, stream);
 }
 

@@ -41,11 +41,12 @@ struct ObjCounts {
 void writeObjCards(const CardMesh& cards, const std::string& object, const std::string& material, ObjCounts& before,
                    std::ostream& out, Up up = Up::Y);
 
-// A tree asset's finest level as one file: writeObj's bark (with mtlFile), then branch cards and leaves as
-// writeObjCards writes them, objects `branch_cards` and `leaves` (materials of the same names when mtlFile is set;
-// empty cards are left out): the same text as those calls in turn, printed in one pass on every core.
-void writeObjAsset(const QuadMesh& bark, const CardMesh& branchCards, const CardMesh& leaves, bool triangles, std::ostream& out,
-                   Up up, const std::string& mtlFile);
+// A tree asset's finest level as one file: writeObj's bark (with mtlFile), then branch cards and the leaves' cards
+// as writeObjCards writes them (the leaves' as leafCards makes them, made as they are printed), objects
+// `branch_cards` and `leaves` (materials of the same names when mtlFile is set; empty ones are left out): the same
+// text as those calls in turn, printed in one pass on every core.
+void writeObjAsset(const QuadMesh& bark, const CardMesh& branchCards, const std::vector<Leaf>& leaves, bool triangles,
+                   std::ostream& out, Up up, const std::string& mtlFile);
 // The .mtl for an OBJ of a tree asset: materials bark, branch_cards and leaves (alpha from the atlas), naming the
 // PNG files given (relative to the .mtl). Blender reads map_Bump as the normal map.
 std::string writeMtl(const std::string& barkColor, const std::string& barkNormal, const std::string& leafAtlas);

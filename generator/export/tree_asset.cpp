@@ -43,26 +43,31 @@ void reserveCards(CardMesh& cards, std::size_t count) {
 
 }  // namespace
 
+LeafCard leafCard(const Leaf& leaf) {
+  const glm::vec3 along = unitOr(glm::vec3(leaf.direction), glm::vec3(0, 0, 1));
+  glm::vec3 normal = unitOr(glm::vec3(leaf.normal), perpendicularTo(along));
+  const glm::vec3 across = unitOr(glm::cross(normal, along), perpendicularTo(normal));
+  normal = glm::normalize(glm::cross(along, across));  // exactly at right angles to the card
+  const std::size_t kind = std::min<std::size_t>(leaf.kind, kLeafBladeShare.size() - 1);
+  const float halfWidth = static_cast<float>(leaf.width) / kLeafBladeShare[kind];
+  const float length = static_cast<float>(leaf.length);
+  const glm::vec3 base(leaf.position);
+  // The atlas cell of this kind; the blade's base at the cell's bottom edge, its tip at the top.
+  const glm::vec2 cell = glm::vec2(static_cast<float>(kind % 2), static_cast<float>(kind / 2)) * 0.5f;
+  // Counter-clockwise about the normal ((-across) x along = normal): +across, -across at the base, then the tip.
+  return LeafCard{{base + across * halfWidth, base - across * halfWidth, base + along * length - across * halfWidth,
+                   base + along * length + across * halfWidth},
+                  {cell + glm::vec2(0.5f, 0.5f), cell + glm::vec2(0.0f, 0.5f), cell, cell + glm::vec2(0.5f, 0.0f)},
+                  normal,
+                  across};
+}
+
 CardMesh leafCards(const std::vector<Leaf>& leaves) {
   CardMesh cards;
   reserveCards(cards, leaves.size());
   for (const Leaf& leaf : leaves) {
-    const glm::vec3 along = unitOr(glm::vec3(leaf.direction), glm::vec3(0, 0, 1));
-    glm::vec3 normal = unitOr(glm::vec3(leaf.normal), perpendicularTo(along));
-    const glm::vec3 across = unitOr(glm::cross(normal, along), perpendicularTo(normal));
-    normal = glm::normalize(glm::cross(along, across));  // exactly at right angles to the card
-    const std::size_t kind = std::min<std::size_t>(leaf.kind, kLeafBladeShare.size() - 1);
-    const float halfWidth = static_cast<float>(leaf.width) / kLeafBladeShare[kind];
-    const float length = static_cast<float>(leaf.length);
-    const glm::vec3 base(leaf.position);
-    // The atlas cell of this kind; the blade's base at the cell's bottom edge, its tip at the top.
-    const glm::vec2 cell = glm::vec2(static_cast<float>(kind % 2), static_cast<float>(kind / 2)) * 0.5f;
-    // Counter-clockwise about the normal ((-across) x along = normal): +across, -across at the base, then the tip.
-    addCard(cards,
-            {base + across * halfWidth, base - across * halfWidth, base + along * length - across * halfWidth,
-             base + along * length + across * halfWidth},
-            {cell + glm::vec2(0.5f, 0.5f), cell + glm::vec2(0.0f, 0.5f), cell, cell + glm::vec2(0.5f, 0.0f)},
-            normal, across);
+    const LeafCard card = leafCard(leaf);
+    addCard(cards, card.corners, card.texcoords, card.normal, card.tangent);
   }
   return cards;
 }

@@ -36,8 +36,17 @@ struct CardMesh {
 // its inverse so the blade has the leaf's width. The same numbers as shaders/leaf.geom.
 constexpr std::array<float, 4> kLeafBladeShare{0.82f, 0.30f, 0.95f, 0.70f};
 
-// One card per leaf, as the renderer draws it at full size: from the blade's base to its tip, textured with its
-// kind's cell of the 2 x 2 leaf atlas (engine/image/leaf_atlas.hpp). Double-sided in use.
+// One leaf's card, as the renderer draws it at full size: from the blade's base to its tip, textured with its
+// kind's cell of the 2 x 2 leaf atlas (engine/image/leaf_atlas.hpp); corners counter-clockwise about the normal,
+// the tangent along +u. Double-sided in use.
+struct LeafCard {
+  std::array<glm::vec3, 4> corners;
+  std::array<glm::vec2, 4> texcoords;  // glTF's convention, as CardMesh's
+  glm::vec3 normal, tangent;
+};
+LeafCard leafCard(const Leaf& leaf);
+
+// leafCard of every leaf, in order.
 CardMesh leafCards(const std::vector<Leaf>& leaves);
 
 // Two crossed cards per fake-branch segment (the renderer's eye-facing rectangle cannot face every eye of a

@@ -44,7 +44,10 @@ void writeTreeFile(const std::string& path, const Skeleton& skeleton, const std:
   requireMeshFile(path, field);
   const bool obj = endsWith(path, ".obj");
   TreeAssetOptions assetOptions = options.asset;
-  if (obj) assetOptions.lods = 1;
+  if (obj) {
+    assetOptions.lods = 1;
+    assetOptions.leaves = false;  // the OBJ writer makes the leaves' cards as it prints them
+  }
   // The texture files are read while the tree is meshed.
   std::future<AssetTextures> textures = std::async(std::launch::async, [&] { return options.textures ? exportTextures() : AssetTextures{}; });
   TreeAsset asset = makeTreeAsset(skeleton, name, assetOptions, std::move(finest), progress);
@@ -69,9 +72,9 @@ void writeTreeFile(const std::string& path, const Skeleton& skeleton, const std:
     writeFileAtomically((folder / mtl).string(), writeMtl(color, normal, atlas));
   }
   const AssetLod& lod = asset.lods.front();
-  writeFileAtomically(path, [&](std::ostream& out) {
-    writeObjAsset(*lod.bark, lod.branchCards, asset.leaves, options.file.triangles, out, options.file.up, mtl);
-  });
+  const std::vector<Leaf> noLeaves;
+  const std::vector<Leaf>& leaves = options.asset.leaves ? skeleton.leaves : noLeaves;
+  writeFileAtomically(path, [&](std::ostream& out) { writeObjAsset(*lod.bark, lod.branchCards, leaves, options.file.triangles, out, options.file.up, mtl); });
 }
 
 }  // namespace arbor
