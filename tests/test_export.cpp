@@ -689,7 +689,7 @@ TEST_CASE("OBJ of an asset: cards as objects after the surface, read back as the
   writeObjCards(asset.leaves, "leaves", "leaves", counts, out);
   const std::string text = out.str();
   std::ostringstream once;
-  writeObjAsset(bark, asset.lods[0].branchCards, skeleton.leaves, false, once, Up::Y, "palm.mtl");
+  writeObjAsset(bark, impostorSegments(skeleton, asset.lods[0].meshedLevels), skeleton.leaves, false, once, Up::Y, "palm.mtl");
   CHECK(once.str() == text);  // one pass over all three parts writes what the three calls write
   // Leaves of every kind, mixed, and kinds past the atlas's four (drawn as the last): the texture coordinates
   // of the cards made while printing are numbered as writeObjCards numbers leafCards' (kinds share corners).
@@ -699,8 +699,14 @@ TEST_CASE("OBJ of an asset: cards as objects after the surface, read back as the
   writeObj(bark, false, mixedParts, Up::Y, "palm.mtl");
   ObjCounts mixedCounts{bark.vertexCount(), bark.vertexCount(), bark.vertexCount()};
   writeObjCards(leafCards(mixed), "leaves", "leaves", mixedCounts, mixedParts);
-  writeObjAsset(bark, CardMesh{}, mixed, false, mixedOnce, Up::Y, "palm.mtl");
+  writeObjAsset(bark, {}, mixed, false, mixedOnce, Up::Y, "palm.mtl");
   CHECK(mixedOnce.str() == mixedParts.str());
+  // Cards sharing corners are not what the writer numbers: refused, not written wrong.
+  CardMesh shared = leafCards({mixed[0], mixed[1]});
+  shared.quads[1][0] = shared.quads[0][3];
+  ObjCounts sharedCounts;
+  std::ostringstream refused;
+  CHECK_THROWS_AS(writeObjCards(shared, "leaves", "", sharedCounts, refused), std::invalid_argument);
   CHECK_THAT(text, Contains("\nmtllib palm.mtl\nusemtl bark\n") && Contains("\no leaves\nusemtl leaves\n"));
   std::size_t faces = 0;
   for (std::size_t at = text.find("\nf "); at != std::string::npos; at = text.find("\nf ", at + 1)) ++faces;
@@ -777,14 +783,14 @@ TEST_CASE("OBJ of an asset in one pass: the same text as its parts in turn, over
     ObjCounts counts{bark.vertexCount(), bark.vertexCount(), bark.vertexCount()};
     writeObjCards(asset.lods[0].branchCards, "branch_cards", "", counts, parts, Up::Z);
     writeObjCards(asset.leaves, "leaves", "", counts, parts, Up::Z);
-    writeObjAsset(bark, asset.lods[0].branchCards, skeleton.leaves, triangles, once, Up::Z, "");
+    writeObjAsset(bark, impostorSegments(skeleton, asset.lods[0].meshedLevels), skeleton.leaves, triangles, once, Up::Z, "");
     CHECK(once.str() == parts.str());
     CHECK(once.str().find("usemtl") == std::string::npos);
   }
   // Every card corner reads back as its own texture coordinate and normal through the shared vt and vn lines
   // (tens of thousands of distinct leaf normals: the dedup table grows many times).
   std::ostringstream file;
-  writeObjAsset(bark, asset.lods[0].branchCards, skeleton.leaves, false, file, Up::Z, "");  // the tree's own axes
+  writeObjAsset(bark, impostorSegments(skeleton, asset.lods[0].meshedLevels), skeleton.leaves, false, file, Up::Z, "");  // the tree's own axes
   std::vector<glm::vec2> vt;
   std::vector<glm::vec3> vn;
   std::vector<std::array<std::uint64_t, 12>> faces;  // v/vt/vn of the four corners
@@ -825,7 +831,7 @@ TEST_CASE("OBJ of an asset in one pass: the same text as its parts in turn, over
   CHECK(vn.size() - barkVertices > 8192);
 
   std::ostringstream noCards, barkOnly;
-  writeObjAsset(bark, CardMesh{}, std::vector<Leaf>{}, false, noCards, Up::Y, "");
+  writeObjAsset(bark, {}, {}, false, noCards, Up::Y, "");
   writeObj(bark, false, barkOnly, Up::Y);
   CHECK(noCards.str() == barkOnly.str());
 }

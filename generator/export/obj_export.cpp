@@ -262,52 +262,61 @@ void appendCorner(char*& out, std::uint64_t v, std::uint64_t vt, std::uint64_t v
   appendIndex(out, vn);
 }
 
-// Index of each value in `values` among its distinct values (first seen first), and those values: cards repeat
-// their atlas corners and every corner of a card has the card's normal, so each is written once. Most repeats are
-// of the corner before or the same corner of the card before: those are found without hashing; the rest in an
-// open-addressed table of indices into `distinct` (a node per value of a willow's leaves was a tenth of its export).
+// Numbers values by their distinct values, first seen first: cards repeat their atlas corners and every corner of
+// a card has the card's normal, so each is written once. Most repeats are of the value before or the one four
+// before (the same corner of the card before): those are found without hashing; the rest in an open-addressed
+// table of indices into the distinct values (a node per value of a willow's leaves was a tenth of its export).
 template <typename T>
-std::vector<std::uint32_t> distinctIndex(const std::vector<T>& values, std::vector<T>& distinct) {
+class Distinct {
+ public:
+  std::uint32_t add(const T& value) {
+    for (const std::size_t back : {std::size_t{1}, std::size_t{4}}) {
+      const Recent& r = recent_[(added_ - back) % 4];
+      if (added_ >= back && same(r.value, value)) return remember(value, r.index);
+    }
+    std::size_t slot = slotOf(value);
+    if (table_[slot] == kEmpty) {
+      if (2 * (values_.size() + 1) > table_.size()) {
+        table_.assign(2 * table_.size(), kEmpty);
+        for (std::uint32_t d = 0; d < values_.size(); ++d) table_[slotOf(values_[d])] = d;
+        slot = slotOf(value);
+      }
+      table_[slot] = static_cast<std::uint32_t>(values_.size());
+      values_.push_back(value);
+    }
+    return remember(value, table_[slot]);
+  }
+  const std::vector<T>& values() const { return values_; }
+
+ private:
   static_assert(sizeof(T) % sizeof(std::uint32_t) == 0, "hashed as 32-bit words");
-  constexpr std::uint32_t kEmpty = ~0u;
-  auto hash = [](const T& value) {
+  static constexpr std::uint32_t kEmpty = ~0u;
+  struct Recent {
+    T value;
+    std::uint32_t index;
+  };
+  static bool same(const T& a, const T& b) { return std::memcmp(&a, &b, sizeof(T)) == 0; }
+  static std::uint64_t hash(const T& value) {
     std::uint32_t words[sizeof(T) / sizeof(std::uint32_t)];
     std::memcpy(words, &value, sizeof(T));
     std::uint64_t h = 0x9E3779B97F4A7C15ull;
-    for (const std::uint32_t w : words) h = (h ^ w) * 0xFF51AFD7ED558CCDull;  // bits, so -0 and 0 stay apart as before
+    for (const std::uint32_t w : words) h = (h ^ w) * 0xFF51AFD7ED558CCDull;  // bits, so -0 and 0 stay apart
     return h ^ (h >> 29);
-  };
-  auto same = [](const T& a, const T& b) { return std::memcmp(&a, &b, sizeof(T)) == 0; };
-  std::vector<std::uint32_t> table(64, kEmpty);  // a power of two, at most half full
-  auto slotOf = [&](const T& value) {
-    std::size_t slot = hash(value) & (table.size() - 1);
-    while (table[slot] != kEmpty && !same(distinct[table[slot]], value)) slot = (slot + 1) & (table.size() - 1);
-    return slot;
-  };
-  std::vector<std::uint32_t> index(values.size());
-  for (std::size_t i = 0; i < values.size(); ++i) {
-    if (i >= 1 && same(values[i], values[i - 1])) {
-      index[i] = index[i - 1];
-      continue;
-    }
-    if (i >= 4 && same(values[i], values[i - 4])) {
-      index[i] = index[i - 4];
-      continue;
-    }
-    std::size_t slot = slotOf(values[i]);
-    if (table[slot] == kEmpty) {
-      if (2 * (distinct.size() + 1) > table.size()) {
-        table.assign(2 * table.size(), kEmpty);
-        for (std::uint32_t d = 0; d < distinct.size(); ++d) table[slotOf(distinct[d])] = d;
-        slot = slotOf(values[i]);
-      }
-      table[slot] = static_cast<std::uint32_t>(distinct.size());
-      distinct.push_back(values[i]);
-    }
-    index[i] = table[slot];
   }
-  return index;
-}
+  std::size_t slotOf(const T& value) const {
+    std::size_t slot = hash(value) & (table_.size() - 1);
+    while (table_[slot] != kEmpty && !same(values_[table_[slot]], value)) slot = (slot + 1) & (table_.size() - 1);
+    return slot;
+  }
+  std::uint32_t remember(const T& value, std::uint32_t index) {
+    recent_[added_++ % 4] = Recent{value, index};
+    return index;
+  }
+  std::vector<T> values_;
+  std::vector<std::uint32_t> table_ = std::vector<std::uint32_t>(64, kEmpty);  // a power of two, at most half full
+  std::array<Recent, 4> recent_{};
+  std::size_t added_ = 0;
+};
 
 ObjPart barkPart(const QuadMesh& mesh, bool triangles, Up up, const std::string& mtlFile) {
   exporting::requirePerVertex(mesh, mesh.normals.size(), "normals", "writeObj");
@@ -333,33 +342,43 @@ ObjPart barkPart(const QuadMesh& mesh, bool triangles, Up up, const std::string&
   return part;
 }
 
-ObjPart cardsPart(const CardMesh& cards, const std::string& object, const std::string& material, ObjCounts& before, Up up) {
-  exporting::requireQuadIndicesInRange(cards.quads, cards.positions.size(), "writeObjCards");
-  // OBJ's v grows up the image, glTF's (and the cards') down it.
-  std::vector<glm::vec2> texcoords(cards.texcoords.size());
-  for (std::size_t i = 0; i < texcoords.size(); ++i) texcoords[i] = glm::vec2(cards.texcoords[i].x, 1.0f - cards.texcoords[i].y);
-  struct Distinct {
-    std::vector<glm::vec2> texcoords;
-    std::vector<glm::vec3> normals;
-    std::vector<std::uint32_t> vt, vn;
+// The lines of cards, `count` of them, card(i) making card i (at least once while counting, again as printed).
+ObjPart cardsPart(std::size_t count, std::function<Card(std::size_t)> card, const std::string& object, const std::string& material,
+                  ObjCounts& before, Up up) {
+  struct Numbers {
+    Distinct<glm::vec2> texcoords;
+    Distinct<glm::vec3> normals;
+    std::vector<std::array<std::uint32_t, 4>> vt;  // per card corner
+    std::vector<std::uint32_t> vn;                 // per card: its corners share it
   };
-  auto d = std::make_shared<Distinct>();
-  d->vt = distinctIndex(texcoords, d->texcoords);
-  d->vn = distinctIndex(cards.normals, d->normals);
+  auto n = std::make_shared<Numbers>();
+  n->vt.resize(count);
+  n->vn.resize(count);
+  for (std::size_t i = 0; i < count; ++i) {
+    const Card c = card(i);
+    // OBJ's v grows up the image, glTF's (and the cards') down it.
+    for (std::size_t k = 0; k < 4; ++k) n->vt[i][k] = n->texcoords.add(glm::vec2(c.texcoords[k].x, 1.0f - c.texcoords[k].y));
+    n->vn[i] = n->normals.add(c.normal);
+  }
   ObjPart part;
   part.preamble = "o " + object + "\n" + (material.empty() ? std::string() : "usemtl " + material + "\n");
-  part.count[0] = cards.positions.size();
-  part.count[1] = d->texcoords.size();
-  part.count[2] = d->normals.size();
-  part.count[3] = cards.quads.size();
-  const CardMesh* c = &cards;
+  part.count[0] = 4 * count;
+  part.count[1] = n->texcoords.values().size();
+  part.count[2] = n->normals.values().size();
+  part.count[3] = count;
+  part.print[0] = [card, up](char*& out, std::size_t begin, std::size_t end) {
+    Card c{};
+    for (std::size_t i = begin; i < end; ++i) {
+      if (i == begin || i % 4 == 0) c = card(i / 4);
+      appendAxes(out, "v", c.corners[i % 4], up);
+    }
+  };
+  part.print[1] = eachLine([n](char*& out, std::size_t i) { appendLine(out, "vt", {n->texcoords.values()[i].x, n->texcoords.values()[i].y}); });
+  part.print[2] = eachLine([n, up](char*& out, std::size_t i) { appendAxes(out, "vn", n->normals.values()[i], up); });
   const ObjCounts at = before;
-  part.print[0] = eachLine([c, up](char*& out, std::size_t i) { appendAxes(out, "v", c->positions[i], up); });
-  part.print[1] = eachLine([d](char*& out, std::size_t i) { appendLine(out, "vt", {d->texcoords[i].x, d->texcoords[i].y}); });
-  part.print[2] = eachLine([d, up](char*& out, std::size_t i) { appendAxes(out, "vn", d->normals[i], up); });
-  part.print[3] = eachLine([c, d, at](char*& out, std::size_t i) {
+  part.print[3] = eachLine([n, at](char*& out, std::size_t i) {
     *out++ = 'f';
-    for (const std::uint32_t k : c->quads[i]) appendCorner(out, at.v + k, at.vt + d->vt[k], at.vn + d->vn[k]);
+    for (std::size_t k = 0; k < 4; ++k) appendCorner(out, at.v + 4 * i + k, at.vt + n->vt[i][k], at.vn + n->vn[i]);
     *out++ = '\n';
   });
   before.v += part.count[0];
@@ -368,60 +387,29 @@ ObjPart cardsPart(const CardMesh& cards, const std::string& object, const std::s
   return part;
 }
 
-// cardsPart of leafCards(leaves) without making them: each card is made as its corners are printed (a willow's
-// 250,000 leaf cards were 52 MB of fresh memory). The same lines: a card's corners share its normal, and a
-// corner's texture coordinate depends only on the leaf's kind, so both are numbered in the same first-seen order.
-ObjPart leavesPart(const std::vector<Leaf>& leaves, const std::string& material, ObjCounts& before, Up up) {
-  struct Distinct {
-    std::vector<glm::vec2> texcoords;
-    std::vector<glm::vec3> normals;
-    std::array<std::uint32_t, 256 * 4> vt{};  // per leaf kind and corner
-    std::vector<std::uint32_t> vn;            // per leaf
-  };
-  auto d = std::make_shared<Distinct>();
-  std::vector<glm::vec3> normals(leaves.size());
-  std::array<bool, 256 * 4> seen{};
-  for (std::size_t i = 0; i < leaves.size(); ++i) {
-    const LeafCard card = leafCard(leaves[i]);
-    normals[i] = card.normal;
-    for (std::size_t k = 0; k < 4; ++k) {
-      const std::size_t key = 4 * std::size_t{leaves[i].kind} + k;
-      if (seen[key]) continue;
-      seen[key] = true;
-      // OBJ's v grows up the image, glTF's (and the cards') down it.
-      const glm::vec2 t(card.texcoords[k].x, 1.0f - card.texcoords[k].y);
-      const auto found = std::find_if(d->texcoords.begin(), d->texcoords.end(), [&](const glm::vec2& u) { return std::memcmp(&u, &t, sizeof t) == 0; });
-      d->vt[key] = static_cast<std::uint32_t>(found - d->texcoords.begin());
-      if (found == d->texcoords.end()) d->texcoords.push_back(t);
+// A CardMesh's cards as they stand: quad i has corners 4i to 4i + 3, all with one normal (leafCards and
+// branchCards make them so).
+ObjPart cardsPart(const CardMesh& cards, const std::string& object, const std::string& material, ObjCounts& before, Up up) {
+  exporting::requireQuadIndicesInRange(cards.quads, cards.positions.size(), "writeObjCards");
+  bool own = cards.positions.size() == 4 * cards.quads.size() && cards.normals.size() == cards.positions.size() &&
+             cards.texcoords.size() == cards.positions.size();
+  for (std::size_t i = 0; own && i < cards.quads.size(); ++i) {
+    for (std::uint32_t k = 0; k < 4; ++k) {
+      own = own && cards.quads[i][k] == 4 * i + k && std::memcmp(&cards.normals[4 * i + k], &cards.normals[4 * i], sizeof(glm::vec3)) == 0;
     }
   }
-  d->vn = distinctIndex(normals, d->normals);
-  ObjPart part;
-  part.preamble = "o leaves\n" + (material.empty() ? std::string() : "usemtl " + material + "\n");
-  part.count[0] = 4 * leaves.size();
-  part.count[1] = d->texcoords.size();
-  part.count[2] = d->normals.size();
-  part.count[3] = leaves.size();
-  const std::vector<Leaf>* l = &leaves;  // the caller's leaves outlive the writing
-  part.print[0] = [l, up](char*& out, std::size_t begin, std::size_t end) {
-    LeafCard card{};
-    for (std::size_t i = begin; i < end; ++i) {
-      if (i == begin || i % 4 == 0) card = leafCard((*l)[i / 4]);
-      appendAxes(out, "v", card.corners[i % 4], up);
-    }
-  };
-  part.print[1] = eachLine([d](char*& out, std::size_t i) { appendLine(out, "vt", {d->texcoords[i].x, d->texcoords[i].y}); });
-  part.print[2] = eachLine([d, up](char*& out, std::size_t i) { appendAxes(out, "vn", d->normals[i], up); });
-  const ObjCounts at = before;
-  part.print[3] = eachLine([l, d, at](char*& out, std::size_t i) {
-    *out++ = 'f';
-    for (std::size_t k = 0; k < 4; ++k) appendCorner(out, at.v + 4 * i + k, at.vt + d->vt[4 * std::size_t{(*l)[i].kind} + k], at.vn + d->vn[i]);
-    *out++ = '\n';
-  });
-  before.v += part.count[0];
-  before.vt += part.count[1];
-  before.vn += part.count[2];
-  return part;
+  if (!own) throw std::invalid_argument("writeObjCards: each card needs four corners of its own (quad i: 4i to 4i + 3) with one normal");
+  const CardMesh* m = &cards;  // the caller's cards outlive the writing
+  return cardsPart(
+      cards.quads.size(),
+      [m](std::size_t i) {
+        const std::array<std::uint32_t, 4>& q = m->quads[i];
+        return Card{{m->positions[q[0]], m->positions[q[1]], m->positions[q[2]], m->positions[q[3]]},
+                    {m->texcoords[q[0]], m->texcoords[q[1]], m->texcoords[q[2]], m->texcoords[q[3]]},
+                    m->normals[q[0]],
+                    glm::vec3(0.0f)};
+      },
+      object, material, before, up);
 }
 
 }  // namespace
@@ -443,14 +431,24 @@ void writeObjCards(const CardMesh& cards, const std::string& object, const std::
   writeParts({cardsPart(cards, object, material, before, up)}, stream);
 }
 
-void writeObjAsset(const QuadMesh& bark, const CardMesh& branchCards, const std::vector<Leaf>& leaves, bool triangles, std::ostream& stream,
-                   Up up, const std::string& mtlFile) {
+void writeObjAsset(const QuadMesh& bark, const std::vector<ImpostorSegment>& branchSegments, const std::vector<Leaf>& leaves, bool triangles,
+                   std::ostream& stream, Up up, const std::string& mtlFile) {
   std::vector<ObjPart> parts;
   parts.push_back(barkPart(bark, triangles, up, mtlFile));
   ObjCounts counts{bark.vertexCount(), bark.vertexCount(), bark.vertexCount()};
   const bool materials = !mtlFile.empty();
-  if (!branchCards.empty()) parts.push_back(cardsPart(branchCards, "branch_cards", materials ? "branch_cards" : "", counts, up));
-  if (!leaves.empty()) parts.push_back(leavesPart(leaves, materials ? "leaves" : "", counts, up));
+  std::vector<const ImpostorSegment*> segmentsWithCards;
+  for (const ImpostorSegment& s : branchSegments)
+    if (hasCards(s)) segmentsWithCards.push_back(&s);
+  if (!segmentsWithCards.empty()) {
+    // Two cards per segment that has them, made as they are printed (the willow's were 19 MB).
+    const auto carded = std::make_shared<std::vector<const ImpostorSegment*>>(std::move(segmentsWithCards));
+    parts.push_back(cardsPart(2 * carded->size(), [carded](std::size_t i) { return (*segmentCards(*(*carded)[i / 2]))[i % 2]; }, "branch_cards",
+                              materials ? "branch_cards" : "", counts, up));
+  }
+  // One card per leaf, made as it is printed (the willow's 250,000 were 52 MB).
+  const std::vector<Leaf>* l = &leaves;  // the caller's leaves outlive the writing
+  if (!leaves.empty()) parts.push_back(cardsPart(leaves.size(), [l](std::size_t i) { return leafCard((*l)[i]); }, "leaves", materials ? "leaves" : "", counts, up));
   writeParts(parts, stream);
 }
 

@@ -37,16 +37,18 @@ struct ObjCounts {
 
 // Cards after a mesh in the same file: `o object`, `usemtl material` (unless empty), their v lines, each distinct
 // vt and vn once (a card's corners share its normal, leaves share their atlas cell's corners), and one quad per
-// card, numbered after `before`, which then counts the cards' lines too.
+// card, numbered after `before`, which then counts the cards' lines too. Each card has four corners of its own
+// (quad i: 4i to 4i + 3) with one normal, as leafCards and branchCards make them; other cards are refused
+// (std::invalid_argument).
 void writeObjCards(const CardMesh& cards, const std::string& object, const std::string& material, ObjCounts& before,
                    std::ostream& out, Up up = Up::Y);
 
-// A tree asset's finest level as one file: writeObj's bark (with mtlFile), then branch cards and the leaves' cards
-// as writeObjCards writes them (the leaves' as leafCards makes them, made as they are printed), objects
-// `branch_cards` and `leaves` (materials of the same names when mtlFile is set; empty ones are left out): the same
-// text as those calls in turn, printed in one pass on every core.
-void writeObjAsset(const QuadMesh& bark, const CardMesh& branchCards, const std::vector<Leaf>& leaves, bool triangles,
-                   std::ostream& out, Up up, const std::string& mtlFile);
+// A tree asset's finest level as one file: writeObj's bark (with mtlFile), then the cards of branchCards(branchSegments)
+// and of leafCards(leaves) as writeObjCards writes them, objects `branch_cards` and `leaves` (materials of the same
+// names when mtlFile is set; empty ones are left out): the same text as those calls in turn, printed in one pass on
+// every core, each card made as it is printed instead of all held at once.
+void writeObjAsset(const QuadMesh& bark, const std::vector<ImpostorSegment>& branchSegments, const std::vector<Leaf>& leaves,
+                   bool triangles, std::ostream& out, Up up, const std::string& mtlFile);
 // The .mtl for an OBJ of a tree asset: materials bark, branch_cards and leaves (alpha from the atlas), naming the
 // PNG files given (relative to the .mtl). Blender reads map_Bump as the normal map.
 std::string writeMtl(const std::string& barkColor, const std::string& barkNormal, const std::string& leafAtlas);

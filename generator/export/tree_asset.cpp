@@ -43,7 +43,7 @@ void reserveCards(CardMesh& cards, std::size_t count) {
 
 }  // namespace
 
-LeafCard leafCard(const Leaf& leaf) {
+Card leafCard(const Leaf& leaf) {
   const glm::vec3 along = unitOr(glm::vec3(leaf.direction), glm::vec3(0, 0, 1));
   glm::vec3 normal = unitOr(glm::vec3(leaf.normal), perpendicularTo(along));
   const glm::vec3 across = unitOr(glm::cross(normal, along), perpendicularTo(normal));
@@ -55,7 +55,7 @@ LeafCard leafCard(const Leaf& leaf) {
   // The atlas cell of this kind; the blade's base at the cell's bottom edge, its tip at the top.
   const glm::vec2 cell = glm::vec2(static_cast<float>(kind % 2), static_cast<float>(kind / 2)) * 0.5f;
   // Counter-clockwise about the normal ((-across) x along = normal): +across, -across at the base, then the tip.
-  return LeafCard{{base + across * halfWidth, base - across * halfWidth, base + along * length - across * halfWidth,
+  return Card{{base + across * halfWidth, base - across * halfWidth, base + along * length - across * halfWidth,
                    base + along * length + across * halfWidth},
                   {cell + glm::vec2(0.5f, 0.5f), cell + glm::vec2(0.0f, 0.5f), cell, cell + glm::vec2(0.5f, 0.0f)},
                   normal,
@@ -66,38 +66,41 @@ CardMesh leafCards(const std::vector<Leaf>& leaves) {
   CardMesh cards;
   reserveCards(cards, leaves.size());
   for (const Leaf& leaf : leaves) {
-    const LeafCard card = leafCard(leaf);
+    const Card card = leafCard(leaf);
     addCard(cards, card.corners, card.texcoords, card.normal, card.tangent);
   }
   return cards;
 }
 
-namespace {
-
-// Segments too short to have a direction get no cards.
 bool hasCards(const ImpostorSegment& s) { return glm::distance(s.from, s.to) > 0.0; }
 
-}  // namespace
+std::optional<std::array<Card, 2>> segmentCards(const ImpostorSegment& s) {
+  if (!hasCards(s)) return std::nullopt;
+  const glm::dvec3 a = s.from, b = s.to;
+  const double length = glm::distance(a, b);
+  const glm::dvec3 axis = (b - a) / length;
+  // Two planes through the axis at right angles; the first holds the horizontal, so every stem's cards agree.
+  const glm::vec3 side1 = unitOr(glm::vec3(glm::cross(axis, glm::dvec3(0, 0, 1))), perpendicularTo(glm::vec3(axis)));
+  const glm::vec3 side2 = glm::normalize(glm::cross(glm::vec3(axis), side1));
+  const glm::vec3 lo(a - axis * (0.5 * s.fromRadius)), hi(b + axis * (0.5 * s.toRadius));
+  const auto r0 = static_cast<float>(s.fromRadius), r1 = static_cast<float>(s.toRadius);
+  // glTF's v grows down the image; the bark's v grows along the stem, as on the mesh.
+  const auto v0 = static_cast<float>(s.fromV), v1 = static_cast<float>(s.toV);
+  auto card = [&](const glm::vec3& side) {
+    return Card{{lo - side * r0, lo + side * r0, hi + side * r1, hi - side * r1},
+                {glm::vec2(0.0f, v0), glm::vec2(1.0f, v0), glm::vec2(1.0f, v1), glm::vec2(0.0f, v1)},
+                glm::normalize(glm::cross(side, glm::vec3(axis))),
+                side};
+  };
+  return std::array<Card, 2>{card(side1), card(side2)};
+}
 
 CardMesh branchCards(const std::vector<ImpostorSegment>& segments) {
   CardMesh cards;
   reserveCards(cards, 2 * segments.size());
   for (const ImpostorSegment& s : segments) {
-    if (!hasCards(s)) continue;
-    const glm::dvec3 a = s.from, b = s.to;
-    const double length = glm::distance(a, b);
-    const glm::dvec3 axis = (b - a) / length;
-    // Two planes through the axis at right angles; the first holds the horizontal, so every stem's cards agree.
-    const glm::vec3 side1 = unitOr(glm::vec3(glm::cross(axis, glm::dvec3(0, 0, 1))), perpendicularTo(glm::vec3(axis)));
-    const glm::vec3 side2 = glm::normalize(glm::cross(glm::vec3(axis), side1));
-    const glm::vec3 lo(a - axis * (0.5 * s.fromRadius)), hi(b + axis * (0.5 * s.toRadius));
-    const auto r0 = static_cast<float>(s.fromRadius), r1 = static_cast<float>(s.toRadius);
-    // glTF's v grows down the image; the bark's v grows along the stem, as on the mesh.
-    const auto v0 = static_cast<float>(s.fromV), v1 = static_cast<float>(s.toV);
-    for (const glm::vec3& side : {side1, side2}) {
-      const glm::vec3 normal = glm::normalize(glm::cross(side, glm::vec3(axis)));
-      addCard(cards, {lo - side * r0, lo + side * r0, hi + side * r1, hi - side * r1},
-              {glm::vec2(0.0f, v0), glm::vec2(1.0f, v0), glm::vec2(1.0f, v1), glm::vec2(0.0f, v1)}, normal, side);
+    if (const auto pair = segmentCards(s)) {
+      for (const Card& card : *pair) addCard(cards, card.corners, card.texcoords, card.normal, card.tangent);
     }
   }
   return cards;

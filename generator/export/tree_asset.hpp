@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -36,22 +37,30 @@ struct CardMesh {
 // its inverse so the blade has the leaf's width. The same numbers as shaders/leaf.geom.
 constexpr std::array<float, 4> kLeafBladeShare{0.82f, 0.30f, 0.95f, 0.70f};
 
-// One leaf's card, as the renderer draws it at full size: from the blade's base to its tip, textured with its
-// kind's cell of the 2 x 2 leaf atlas (engine/image/leaf_atlas.hpp); corners counter-clockwise about the normal,
-// the tangent along +u. Double-sided in use.
-struct LeafCard {
+// One flat card: corners counter-clockwise seen from the normal's side, texture coordinates in glTF's convention
+// (as CardMesh's), the tangent along +u.
+struct Card {
   std::array<glm::vec3, 4> corners;
-  std::array<glm::vec2, 4> texcoords;  // glTF's convention, as CardMesh's
+  std::array<glm::vec2, 4> texcoords;
   glm::vec3 normal, tangent;
 };
-LeafCard leafCard(const Leaf& leaf);
+
+// One leaf's card, as the renderer draws it at full size: from the blade's base to its tip, textured with its
+// kind's cell of the 2 x 2 leaf atlas (engine/image/leaf_atlas.hpp). Double-sided in use.
+Card leafCard(const Leaf& leaf);
 
 // leafCard of every leaf, in order.
 CardMesh leafCards(const std::vector<Leaf>& leaves);
 
-// Two crossed cards per fake-branch segment (the renderer's eye-facing rectangle cannot face every eye of a
-// static file): each as wide as the branch, reaching half a radius past both ends as the renderer's do, bark
-// u across, v running on along the stem.
+// The two crossed cards of a fake-branch segment (the renderer's eye-facing rectangle cannot face every eye of a
+// static file): each as wide as the branch, reaching half a radius past both ends as the renderer's do, bark u
+// across, v running on along the stem. None for a segment too short to have a direction.
+std::optional<std::array<Card, 2>> segmentCards(const ImpostorSegment& segment);
+
+// Whether segmentCards makes cards for the segment: it has a direction.
+bool hasCards(const ImpostorSegment& segment);
+
+// segmentCards of every segment, in order.
 CardMesh branchCards(const std::vector<ImpostorSegment>& segments);
 
 // One level of detail: the bark mesh of the levels it meshes and cards for the rest.

@@ -46,7 +46,8 @@ void writeTreeFile(const std::string& path, const Skeleton& skeleton, const std:
   TreeAssetOptions assetOptions = options.asset;
   if (obj) {
     assetOptions.lods = 1;
-    assetOptions.leaves = false;  // the OBJ writer makes the leaves' cards as it prints them
+    assetOptions.leaves = false;  // the OBJ writer makes the cards as it prints them
+    assetOptions.branchCards = false;
   }
   // The texture files are read while the tree is meshed.
   std::future<AssetTextures> textures = std::async(std::launch::async, [&] { return options.textures ? exportTextures() : AssetTextures{}; });
@@ -74,7 +75,9 @@ void writeTreeFile(const std::string& path, const Skeleton& skeleton, const std:
   const AssetLod& lod = asset.lods.front();
   const std::vector<Leaf> noLeaves;
   const std::vector<Leaf>& leaves = options.asset.leaves ? skeleton.leaves : noLeaves;
-  writeFileAtomically(path, [&](std::ostream& out) { writeObjAsset(*lod.bark, lod.branchCards, leaves, options.file.triangles, out, options.file.up, mtl); });
+  // Stubs are never meshed, so their cards are there whatever the levels (wheat's grains).
+  const std::vector<ImpostorSegment> segments = options.asset.branchCards ? impostorSegments(skeleton, lod.meshedLevels) : std::vector<ImpostorSegment>{};
+  writeFileAtomically(path, [&](std::ostream& out) { writeObjAsset(*lod.bark, segments, leaves, options.file.triangles, out, options.file.up, mtl); });
 }
 
 }  // namespace arbor
