@@ -437,12 +437,11 @@ void writeObjAsset(const QuadMesh& bark, const std::vector<ImpostorSegment>& bra
   parts.push_back(barkPart(bark, triangles, up, mtlFile));
   ObjCounts counts{bark.vertexCount(), bark.vertexCount(), bark.vertexCount()};
   const bool materials = !mtlFile.empty();
-  std::vector<const ImpostorSegment*> segmentsWithCards;
+  // Two cards per segment that has them, made as they are printed (the willow's were 19 MB).
+  const auto carded = std::make_shared<std::vector<const ImpostorSegment*>>();
   for (const ImpostorSegment& s : branchSegments)
-    if (hasCards(s)) segmentsWithCards.push_back(&s);
-  if (!segmentsWithCards.empty()) {
-    // Two cards per segment that has them, made as they are printed (the willow's were 19 MB).
-    const auto carded = std::make_shared<std::vector<const ImpostorSegment*>>(std::move(segmentsWithCards));
+    if (hasCards(s)) carded->push_back(&s);
+  if (!carded->empty()) {
     parts.push_back(cardsPart(2 * carded->size(), [carded](std::size_t i) { return (*segmentCards(*(*carded)[i / 2]))[i % 2]; }, "branch_cards",
                               materials ? "branch_cards" : "", counts, up));
   }

@@ -56,10 +56,10 @@ Card leafCard(const Leaf& leaf) {
   const glm::vec2 cell = glm::vec2(static_cast<float>(kind % 2), static_cast<float>(kind / 2)) * 0.5f;
   // Counter-clockwise about the normal ((-across) x along = normal): +across, -across at the base, then the tip.
   return Card{{base + across * halfWidth, base - across * halfWidth, base + along * length - across * halfWidth,
-                   base + along * length + across * halfWidth},
-                  {cell + glm::vec2(0.5f, 0.5f), cell + glm::vec2(0.0f, 0.5f), cell, cell + glm::vec2(0.5f, 0.0f)},
-                  normal,
-                  across};
+               base + along * length + across * halfWidth},
+              {cell + glm::vec2(0.5f, 0.5f), cell + glm::vec2(0.0f, 0.5f), cell, cell + glm::vec2(0.5f, 0.0f)},
+              normal,
+              across};
 }
 
 CardMesh leafCards(const std::vector<Leaf>& leaves) {
@@ -180,7 +180,6 @@ namespace {
 
 // What a level of detail draws beside its bark: the cards of the stems it leaves out (and of stubs).
 struct LodCards {
-  int levels = 0;
   std::vector<ImpostorSegment> segments;
   CardMesh cards;
 };
@@ -206,7 +205,7 @@ TreeAsset makeTreeAsset(const Skeleton& skeleton, const std::string& name, const
   std::future<std::pair<CardMesh, std::vector<LodCards>>> cardsMade = std::async(std::launch::async, [&] {
     std::vector<LodCards> lodCards;
     for (const int levels : lodLevels) {
-      LodCards c{levels, options.branchCards ? impostorSegments(skeleton, levels) : std::vector<ImpostorSegment>{}, {}};
+      LodCards c{options.branchCards ? impostorSegments(skeleton, levels) : std::vector<ImpostorSegment>{}, {}};
       c.cards = branchCards(c.segments);
       lodCards.push_back(std::move(c));
     }

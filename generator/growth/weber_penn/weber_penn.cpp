@@ -52,8 +52,10 @@ class Grower {
     if (!excess.empty()) throw GenerationError(excess);
     // Room for the estimate (within 15 % on Arbaro's files) and a quarter more: grown by doubling, the willow's
     // 250,000 leaves and 28,000 stems touched twice their memory. Pages past what is grown are never touched.
+    // At least `least`, at most the limit (which may be the smaller: a test's limits are tiny).
     auto room = [](double expected, std::size_t limit, std::size_t least) {
-      return std::clamp(static_cast<std::size_t>(std::min(1.25 * expected, 1e12)), least, limit);
+      const std::size_t wanted = expected > 0.0 ? static_cast<std::size_t>(std::min(1.25 * expected, 1e12)) : 0;
+      return std::min(std::max(wanted, least), limit);
     };
     tree_.stems.reserve(room(estimate.stems, options_.limits.nodes, 1024));
     tree_.leaves.reserve(room(estimate.leaves, options_.limits.leaves, 4096));
