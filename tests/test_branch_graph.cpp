@@ -247,6 +247,60 @@ TEST_CASE("a root with several children becomes a hub of trunks", "[graph]") {
   CHECK(r.eulerCharacteristic == 2);
 }
 
+TEST_CASE("a thin child leaves through a square inset in its parent's side, on the side where its axis meets it", "[graph][mesh]") {
+  // A trunk of radius 0.4 with one twig of radius 0.03 leaving it level at 2 m, towards the middle of a side (the
+  // trunk's cross sections have their corners on x and y).
+  BranchGraph g;
+  g.nodes = {at(0, 0, 0, -1, 0.4), at(0, 0, 2, 0, 0.4), at(0, 0, 4, 1, 0.35), at(1.5, 1.5, 2, 1, 0.03), at(3, 3, 2.1, 3, 0.02)};
+  const Skeleton s = graphToSkeleton(g, unmerged());
+  REQUIRE(s.stems.size() == 2);
+  MeshOptions whole;
+  whole.insetCollar = 0.0;
+  const TreeMesh plain = buildTreeMesh(s, whole), inset = buildTreeMesh(s);
+  for (const TreeMesh* t : {&plain, &inset}) {
+    const MeshTopologyReport r = checkTopology(t->mesh);
+    CHECK(r.boundaryEdges == 0);
+    CHECK(r.nonManifoldEdges == 0);
+    CHECK(r.misorientedEdges == 0);
+    CHECK(r.degenerateFaces == 0);
+    CHECK(r.eulerCharacteristic == 2);
+  }
+  // Four quads and four vertices of valence 4 more; every other vertex keeps its valence.
+  auto histogram = [](const QuadMesh& m) {
+    std::vector<int> valence(m.positions.size(), 0);
+    for (const auto& q : m.quads)
+      for (std::uint32_t v : q) ++valence[v];
+    std::map<int, int> count;
+    for (int v : valence) ++count[v];
+    return count;
+  };
+  std::map<int, int> expected = histogram(plain.mesh);
+  expected[4] += 4;
+  CHECK(histogram(inset.mesh) == expected);
+  CHECK(inset.mesh.quads.size() == plain.mesh.quads.size() + 4);
+  // The twig's first quads join the side's corners (the trunk's vertices) to the inset: its four inner corners
+  // lie on the trunk's surface, within a cross section of the twig's radius of where the twig's axis meets it.
+  std::size_t first = 0;
+  while (inset.quadStem[first] != 1) ++first;
+  const double rc = s.stems[1].startRadius * MeshOptions{}.limitCompensation;
+  const Vec3 branch = s.nodes[static_cast<std::size_t>(s.stems[1].attachNode)].world.position;
+  const Vec3 dir = glm::normalize(Vec3(1.0, 1.0, 0.0));
+  for (std::size_t k = 0; k < 4; ++k) {
+    const auto& q = inset.mesh.quads[first + k];
+    const auto& next = inset.mesh.quads[first + (k + 1) % 4];
+    CHECK(q[1] == next[0]);  // consecutive around the inset
+    CHECK(q[2] == next[3]);
+    const Vec3 inner(inset.mesh.positions[q[3]]);
+    const double fromAxis = glm::length(glm::cross(inner - branch, dir));
+    CHECK(fromAxis < 1.2 * rc);
+    CHECK(fromAxis > 0.8 * rc);
+    // On the side: as far from the trunk's axis as the side's own corners are, less the flat face's sagitta.
+    const double radial = glm::length(glm::vec2(inner.x, inner.y));
+    CHECK(radial > 0.4 * MeshOptions{}.limitCompensation * std::sqrt(0.5) * 0.99);
+    CHECK(radial < 0.4 * MeshOptions{}.limitCompensation * 1.01);
+  }
+}
+
 TEST_CASE("smoothing moves no branch point, tip or root, and does move the rest", "[graph]") {
   GraphOptions o = unmerged();
   o.smoothingPasses = 5;

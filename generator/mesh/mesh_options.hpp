@@ -15,6 +15,9 @@ struct MeshOptions {
   // Control cross sections are enlarged so that the Catmull-Clark limit of a four-vertex ring (between
   // 0.648 and 0.667 of its control radius) has about the skeleton's radius.
   double limitCompensation = 1.0 / 0.657;
+  // A thin child leaves through a square inset in its parent's side, as wide as a cross section of this many
+  // child radii (0: through the whole side, as wide as the parent).
+  double insetCollar = 1.0;
 };
 
 }  // namespace arbor
