@@ -301,6 +301,33 @@ TEST_CASE("a thin child leaves through a square inset in its parent's side, on t
   }
 }
 
+TEST_CASE("a stem bending tighter than its radius leaves out the cross sections whose bands would run backwards", "[graph][mesh]") {
+  // A stem of radius 0.15 turning through a right angle about 0.1 m in radius: nodes closer than its radius.
+  BranchGraph g;
+  g.nodes = {at(0, 0, 0, -1, 0.15), at(0, 0, 1, 0, 0.15), at(0.02, 0, 1.06, 1, 0.15), at(0.06, 0, 1.1, 2, 0.15),
+             at(0.12, 0, 1.12, 3, 0.15), at(0.8, 0, 1.12, 4, 0.1)};
+  const Skeleton s = graphToSkeleton(g, unmerged());
+  REQUIRE(s.stems.size() == 1);
+  const TreeMesh tree = buildTreeMesh(s);
+  const MeshTopologyReport r = checkTopology(tree.mesh);
+  CHECK(r.boundaryEdges == 0);
+  CHECK(r.eulerCharacteristic == 2);
+  auto corner = [&](const MeshRing& ring, std::size_t k) { return Vec3(tree.mesh.positions[ring.vertices[k]]); };
+  // A ring's direction from its corners (counter-clockwise about it).
+  auto direction = [&](const MeshRing& ring) {
+    return glm::normalize(glm::cross(corner(ring, 0) - corner(ring, 2), corner(ring, 1) - corner(ring, 3)));
+  };
+  REQUIRE(tree.rings.size() >= 3);
+  for (std::size_t i = 1; i < tree.rings.size(); ++i) {
+    const MeshRing &a = tree.rings[i - 1], &b = tree.rings[i];
+    for (std::size_t k = 0; k < 4; ++k) {
+      CHECK(glm::dot(corner(b, k) - a.center, direction(a)) > 0.0);
+      CHECK(glm::dot(corner(a, k) - b.center, direction(b)) < 0.0);
+    }
+  }
+  CHECK(checkSelfIntersections(tree, s).folds == 0);
+}
+
 TEST_CASE("smoothing moves no branch point, tip or root, and does move the rest", "[graph]") {
   GraphOptions o = unmerged();
   o.smoothingPasses = 5;

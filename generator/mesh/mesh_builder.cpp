@@ -754,6 +754,9 @@ class Builder {
         connectSplit(stem, poly, lo, splitSlab);
         return;
       }
+      // A plain cross section the band to which would run backwards (the inside of a bend tighter than the radius)
+      // is left out: the tube goes on to the next one (all trees' folds 1,584 -> 1,551, mesh-made pairs -0.7 %).
+      if (role == -2 && !bandAhead(last, ringCorners(poly, last.frame, s), poly.position(s), transportFrame(last.frame, poly.direction(s)).T)) continue;
       const Ring next = makeRing(stem, poly, last, s, role >= -1 ? slabNeed(slabs, s) : 0.0);
       if (role >= 0) connectSlab(stem, last, next, slabs[static_cast<std::size_t>(role)]);
       else band(last, next);
@@ -776,6 +779,16 @@ class Builder {
     const double r = std::max({poly.radius(s), minRadius, 1e-5 * sk_.treeScale});
     const RingFrame frame = transportFrame(last.frame, poly.direction(s));
     return emitRing(stem, p, frame, r, last.tex + barkTextureAdvance(glm::distance(p, last.center), 0.5 * (r + last.radius)), s);
+  }
+
+  // Whether a band from ring a to the cross section with corners b (centre c, direction t) runs forwards: b's
+  // corners ahead of a's plane and a's behind b's. Where it does not, the inside of a tight bend folds.
+  bool bandAhead(const Ring& a, const std::array<Vec3, 4>& b, const Vec3& c, const Vec3& t) const {
+    for (std::size_t k = 0; k < 4; ++k) {
+      if (glm::dot(b[k] - a.center, a.frame.T) <= 0.0) return false;
+      if (glm::dot(position(a.v[k]) - c, t) >= 0.0) return false;
+    }
+    return true;
   }
 
   Ring advance(int stem, const StemPolyline& poly, const Ring& last, double s) {
