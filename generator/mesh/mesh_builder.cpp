@@ -84,6 +84,10 @@ class Builder {
   std::vector<int> uvwCount_;
   std::vector<std::uint8_t> portUse_;      // per vertex: how many ports it is a corner of
   std::optional<std::array<QuadCorners, 4>> inset_;  // the quads around the port being left, when inset
+  struct InsetPlane {
+    Vec3 center{0.0}, normal{0.0};
+    double tolerance = 0.0;
+  } insetPlane_;
   int currentStem_ = -1;                   // stem whose faces are being emitted
   const PortStart* currentStart_ = nullptr;  // how that stem left its parent (null: a trunk)
   bool connectingMoved_ = false;           // the slab being connected holds children moved to the tube's start
@@ -374,14 +378,15 @@ class Builder {
       weights[k] = {(1 - a) * (1 - b), a * (1 - b), a * b, (1 - a) * b};
       corners[k] = weights[k][0] * p[0] + weights[k][1] * p[1] + weights[k][2] * p[2] + weights[k][3] * p[3];
     }
-    // Where another of the parent's faces passes through the port (a neck of the parent's own, leaving its
-    // parent there), the inset would cut it: the child leaves through the whole side instead.
+    // Where another of the parent's faces passes through the side (a neck of the parent's own, leaving its parent
+    // there), the inset's quads would cut it: the child leaves through the whole side instead.
     std::array<QuadCorners, 4> around;
     for (std::size_t k = 0; k < 4; ++k) {
       const std::size_t j = (k + 1) % 4;
-      around[k] = QuadCorners{{p[k], p[j], corners[j], corners[k]}, {q[k], q[j], kUnmade + static_cast<std::uint32_t>(j), kUnmade + static_cast<std::uint32_t>(k)}};
-      if (quadCutsParent(start, around[k])) return std::nullopt;
+      around[k] = QuadCorners{{p[k], p[j], corners[j], corners[k]},
+                              {q[k], q[j], kUnmade + static_cast<std::uint32_t>(j), kUnmade + static_cast<std::uint32_t>(k)}};
     }
+    if (quadsCutParent(start, around)) return std::nullopt;
     const QuadMesh& m = out_.mesh;
     std::array<std::uint32_t, 4> inner{};
     for (std::size_t k = 0; k < 4; ++k) {
@@ -394,6 +399,10 @@ class Builder {
       inner[k] = addVertex(corners[k], radius, m.level[q[0]], directionOr(tangent, Vec3(m.tangents[q[0]])));
     }
     inset_.emplace();
+    // The side's plane, and how far its (bilinear) corners stand off it, for bandMeetsInset's quick answer.
+    insetPlane_ = InsetPlane{center, normal, 0.0};
+    for (const Vec3& c : p) insetPlane_.tolerance = std::max(insetPlane_.tolerance, 2.0 * std::abs(glm::dot(c - center, normal)));
+    insetPlane_.tolerance += 1e-6 * (w + h);
     for (std::size_t k = 0; k < 4; ++k) {
       const std::size_t j = (k + 1) % 4;
       addUvw(q[k], static_cast<int>(k), start.tex);  // the side's corners average in the child's texture as before
@@ -403,15 +412,22 @@ class Builder {
     return inner;
   }
 
-  // Whether quad c (corners not made yet carry kUnmade indices) meets a face of the parent beyond what they share.
-  bool quadCutsParent(const PortStart& start, const QuadCorners& c) {
+  // Whether any of quads c (corners not made yet carry kUnmade indices) meets a face of the parent beyond what
+  // they share.
+  bool quadsCutParent(const PortStart& start, const std::array<QuadCorners, 4>& c) {
     if (start.parentFacesEnd <= start.parentFacesBegin) return false;
     FaceGrid& grid = parentGrid(start.parentFacesBegin, start.parentFacesEnd);
-    const Box box = boxOf(c.p);
-    for (std::uint32_t f : grid.candidates(box)) {
-      if (!grid.box(f).overlaps(box)) continue;
+    std::array<Box, 4> boxes;
+    for (std::size_t k = 0; k < 4; ++k) boxes[k] = boxOf(c[k].p);
+    const Box all = boxOf(std::array<Vec3, 8>{c[0].p[0], c[0].p[1], c[1].p[1], c[2].p[1], c[0].p[2], c[0].p[3], c[2].p[2], c[2].p[3]});
+    for (std::uint32_t f : grid.candidates(all)) {
+      const Box& faceBox = grid.box(f);
+      if (!faceBox.overlaps(all)) continue;
       const auto& q = out_.mesh.quads[start.parentFacesBegin + f];
-      if (quadsMeet(c, QuadCorners{{position(q[0]), position(q[1]), position(q[2]), position(q[3])}, q})) return true;
+      const QuadCorners face{{position(q[0]), position(q[1]), position(q[2]), position(q[3])}, q};
+      for (std::size_t k = 0; k < 4; ++k) {
+        if (faceBox.overlaps(boxes[k]) && quadsMeet(c[k], face)) return true;
+      }
     }
     return false;
   }
@@ -419,6 +435,10 @@ class Builder {
   // Whether the neck from the inset (corners a, indices port) to corners b (not made yet) folds over the inset's quads.
   bool bandMeetsInset(const std::array<Vec3, 4>& a, const std::array<std::uint32_t, 4>& port, const std::array<Vec3, 4>& b) const {
     if (!inset_) return false;
+    // The inset's quads lie on the side: a neck whose far corners all stand clear above it cannot fold over them.
+    bool above = true;
+    for (const Vec3& c : b) above = above && glm::dot(c - insetPlane_.center, insetPlane_.normal) > insetPlane_.tolerance;
+    if (above) return false;
     for (std::size_t i = 0; i < 4; ++i) {
       const std::size_t j = (i + 1) % 4;
       const QuadCorners side{{a[i], a[j], b[j], b[i]},
