@@ -83,11 +83,14 @@ class Builder {
   std::vector<Vec3> uvwSum_;
   std::vector<int> uvwCount_;
   std::vector<std::uint8_t> portUse_;      // per vertex: how many ports it is a corner of
-  std::optional<std::array<QuadCorners, 4>> inset_;  // the quads around the port being left, when inset
-  struct InsetPlane {
+  // The port being left, when inset: the quads around it, and its side's plane with how far the side's (bilinear)
+  // corners stand off it, for bandMeetsInset's quick answer.
+  struct Inset {
+    std::array<QuadCorners, 4> around;
     Vec3 center{0.0}, normal{0.0};
     double tolerance = 0.0;
-  } insetPlane_;
+  };
+  std::optional<Inset> inset_;
   int currentStem_ = -1;                   // stem whose faces are being emitted
   const PortStart* currentStart_ = nullptr;  // how that stem left its parent (null: a trunk)
   bool connectingMoved_ = false;           // the slab being connected holds children moved to the tube's start
@@ -341,13 +344,7 @@ class Builder {
     for (int k = 0; k < 4; ++k) addUvw(q[static_cast<std::size_t>(k)], k, port.tex);  // child-then-parent averaging
 
     const RingFrame exitFrame = transportFrame(port.frame, directionOr(exitDir + d, exitDir));
-    sLo = poly.firstBeyond(start.branchPoint, glm::distance(exitCenter, start.branchPoint) + 0.5 * rc);
-    if (!start.top) {
-      // A child at a small angle runs along its parent; its tube begins where its skeleton has left the parent.
-      const double clearance = std::sqrt(0.5) * start.parentReach + rc * opt_.limitCompensation;
-      sLo = std::max(sLo, poly.firstClearOf(start.branchPoint, start.parentAxis, clearance));
-    }
-    sLo = std::max(sLo, grandClearance(poly, start, rc));
+    sLo = tubeStartPast(poly, start, exitCenter);
     const auto offsets = ringOffsets(exitFrame, exitRadius * opt_.limitCompensation);
     const std::array<Vec3, 4> exitCorners{exitCenter + offsets[0], exitCenter + offsets[1], exitCenter + offsets[2],
                                           exitCenter + offsets[3]};
@@ -363,9 +360,7 @@ class Builder {
   std::optional<Ring> leaveInsetDirectly(int stem, const StemPolyline& poly, const PortStart& start, const Ring& port,
                                          const std::array<Vec3, 4>& c, const Vec3& normal, double& sLo) {
     const double rc = poly.radius(0.0);
-    double s = poly.firstBeyond(start.branchPoint, glm::distance(port.center, start.branchPoint) + 0.5 * rc);
-    s = std::max(s, poly.firstClearOf(start.branchPoint, start.parentAxis, std::sqrt(0.5) * start.parentReach + rc * opt_.limitCompensation));
-    s = std::max(s, grandClearance(poly, start, rc));
+    double s = tubeStartPast(poly, start, port.center);
     double portRadius = 0.0;
     for (const Vec3& corner : c) portRadius += 0.25 * glm::distance(corner, port.center);
     s = clearOfParent(poly, start, port.frame, c, s, 0.25 * std::max(portRadius, rc));
@@ -420,11 +415,7 @@ class Builder {
     // Where another of the parent's faces passes through the side (a neck of the parent's own, leaving its parent
     // there), the inset's quads would cut it: the child leaves through the whole side instead.
     std::array<QuadCorners, 4> around;
-    for (std::size_t k = 0; k < 4; ++k) {
-      const std::size_t j = (k + 1) % 4;
-      around[k] = QuadCorners{{p[k], p[j], corners[j], corners[k]},
-                              {q[k], q[j], kUnmade + static_cast<std::uint32_t>(j), kUnmade + static_cast<std::uint32_t>(k)}};
-    }
+    for (std::size_t k = 0; k < 4; ++k) around[k] = unmadeSide(p, q, corners, k);
     if (quadsCutParent(start, around)) return std::nullopt;
     const QuadMesh& m = out_.mesh;
     std::array<std::uint32_t, 4> inner{};
@@ -440,16 +431,14 @@ class Builder {
     // The inset is the child's first cross section (off its skeleton): its connection, where the joint checks look.
     out_.rings.push_back(MeshRing{currentStem_, inner, 0.25 * (corners[0] + corners[1] + corners[2] + corners[3]), start.tex,
                                   opt_.insetCollar * poly.radius(0.0), -1.0});
-    inset_.emplace();
-    // The side's plane, and how far its (bilinear) corners stand off it, for bandMeetsInset's quick answer.
-    insetPlane_ = InsetPlane{center, normal, 0.0};
-    for (const Vec3& c : p) insetPlane_.tolerance = std::max(insetPlane_.tolerance, 2.0 * std::abs(glm::dot(c - center, normal)));
-    insetPlane_.tolerance += 1e-6 * (w + h);
+    double offPlane = 0.0;
+    for (const Vec3& c : p) offPlane = std::max(offPlane, 2.0 * std::abs(glm::dot(c - center, normal)));
+    inset_.emplace(Inset{{}, center, normal, offPlane + 1e-6 * (w + h)});
     for (std::size_t k = 0; k < 4; ++k) {
       const std::size_t j = (k + 1) % 4;
       addUvw(q[k], static_cast<int>(k), start.tex);  // the side's corners average in the child's texture as before
       addQuad(q[k], q[j], inner[j], inner[k]);
-      (*inset_)[k] = QuadCorners{{p[k], p[j], corners[j], corners[k]}, {q[k], q[j], inner[j], inner[k]}};
+      inset_->around[k] = QuadCorners{{p[k], p[j], corners[j], corners[k]}, {q[k], q[j], inner[j], inner[k]}};
     }
     return inner;
   }
@@ -481,17 +470,28 @@ class Builder {
     if (!inset_) return false;
     // The inset's quads lie on the side: a neck whose far corners all stand clear above it cannot fold over them.
     bool above = quick;
-    for (const Vec3& c : b) above = above && glm::dot(c - insetPlane_.center, insetPlane_.normal) > insetPlane_.tolerance;
+    for (const Vec3& c : b) above = above && glm::dot(c - inset_->center, inset_->normal) > inset_->tolerance;
     if (above) return false;
     for (std::size_t i = 0; i < 4; ++i) {
-      const std::size_t j = (i + 1) % 4;
-      const QuadCorners side{{a[i], a[j], b[j], b[i]},
-                             {port[i], port[j], kUnmade + static_cast<std::uint32_t>(j), kUnmade + static_cast<std::uint32_t>(i)}};
-      for (const QuadCorners& around : *inset_) {
+      const QuadCorners side = unmadeSide(a, port, b, i);
+      for (const QuadCorners& around : inset_->around) {
         if (quadsMeet(side, around)) return true;
       }
     }
     return false;
+  }
+
+  // Where a child's tube may begin after a first cross section centred at `from`: past it along the skeleton, and
+  // (a side child) where the skeleton has left the parent and any grandparent it must clear.
+  double tubeStartPast(const StemPolyline& poly, const PortStart& start, const Vec3& from) const {
+    const double rc = poly.radius(0.0);
+    double s = poly.firstBeyond(start.branchPoint, glm::distance(from, start.branchPoint) + 0.5 * rc);
+    if (!start.top) {
+      // A child at a small angle runs along its parent; its tube begins where its skeleton has left the parent.
+      const double clearance = std::sqrt(0.5) * start.parentReach + rc * opt_.limitCompensation;
+      s = std::max(s, poly.firstClearOf(start.branchPoint, start.parentAxis, clearance));
+    }
+    return std::max(s, grandClearance(poly, start, rc));
   }
 
   // Where a moved child's skeleton has cleared its grandparent's cross sections with a ring of `radius`.
@@ -524,14 +524,18 @@ class Builder {
     return grids_.back()->grid;
   }
 
+  // Side i of the band from corners a (vertex indices ids) to corners b, not made yet: b's carry indices no vertex has.
+  static QuadCorners unmadeSide(const std::array<Vec3, 4>& a, const std::array<std::uint32_t, 4>& ids, const std::array<Vec3, 4>& b,
+                                std::size_t i) {
+    const std::size_t j = (i + 1) % 4;
+    return QuadCorners{{a[i], a[j], b[j], b[i]},
+                       {ids[i], ids[j], kUnmade + static_cast<std::uint32_t>(j), kUnmade + static_cast<std::uint32_t>(i)}};
+  }
+
   // Whether the band from the port to corners b (not made yet) twists so far that its sides cross each other.
   static bool bandFolds(const std::array<Vec3, 4>& a, const std::array<std::uint32_t, 4>& port, const std::array<Vec3, 4>& b) {
     std::array<QuadCorners, 4> sides;
-    for (std::size_t i = 0; i < 4; ++i) {
-      const std::size_t j = (i + 1) % 4;
-      sides[i] = QuadCorners{{a[i], a[j], b[j], b[i]},
-                             {port[i], port[j], kUnmade + static_cast<std::uint32_t>(j), kUnmade + static_cast<std::uint32_t>(i)}};
-    }
+    for (std::size_t i = 0; i < 4; ++i) sides[i] = unmadeSide(a, port, b, i);
     for (std::size_t i = 0; i < 4; ++i) {
       for (std::size_t k = i + 1; k < 4; ++k) {
         if (quadsMeet(sides[i], sides[k])) return true;
