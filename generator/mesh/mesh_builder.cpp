@@ -3,6 +3,7 @@
 // slabs (connection.cpp). Every child tube starts from four vertices of its parent, so the result is one
 // closed mesh without a single branch cylinder stuck inside another.
 #include <algorithm>
+#include <limits>
 #include <cmath>
 #include <memory>
 #include <optional>
@@ -12,6 +13,7 @@
 #include "common/text_util.hpp"
 #include "connection.hpp"
 #include "cross_section.hpp"
+#include "edge_plane.hpp"
 #include "face_grid.hpp"
 #include "mesh_attributes.hpp"
 #include "mesh_checks.hpp"
@@ -443,6 +445,53 @@ class Builder {
     return inner;
   }
 
+  // Planes through a port's edges (EdgePlane): a face behind one of them cannot meet what is in front.
+  using EdgePlanes = std::array<std::optional<EdgePlane>, 4>;
+
+  static bool behindOne(const EdgePlanes& planes, const QuadCorners& face, double margin) {
+    for (const auto& plane : planes) {
+      if (plane && plane->behind(face.p, face.index, margin)) return true;
+    }
+    return false;
+  }
+
+  // How far in front and behind points must be: twice quadsMeet's fold angle (1e-3) over their span, so that two
+  // quads on one edge that the plane keeps apart are never near enough to folded to count as a fold there.
+  static double planeMargin(double span) { return 2e-3 * span; }
+
+  // Planes through the port's edges with the inset's quads c in front (quad k runs from port corner k to k + 1, then
+  // inwards: it touches plane k only along that edge).
+  static EdgePlanes insetPlanes(const std::array<QuadCorners, 4>& c) {
+    const Vec3 up = glm::cross(c[2].p[0] - c[0].p[0], c[3].p[0] - c[1].p[0]);
+    const Vec3 centroid = 0.25 * (c[0].p[0] + c[1].p[0] + c[2].p[0] + c[3].p[0]);
+    const double margin = planeMargin(glm::distance(c[0].p[0], c[2].p[0]));
+    EdgePlanes planes;
+    for (std::size_t k = 0; k < 4; ++k) {
+      std::vector<Vec3> front;
+      for (std::size_t i = 0; i < 4; ++i) {
+        if (i != k && i != (k + 1) % 4) front.push_back(c[i].p[0]);
+        front.push_back(c[i].p[3]);
+      }
+      planes[k] = edgePlane(c[k].p[0], c[k].p[1], {c[k].index[0], c[k].index[1]}, up, centroid - c[k].p[0], front, {}, margin);
+    }
+    return planes;
+  }
+
+  // Planes through the port's edges with a band leaving it (corners a, then b farther out) wholly in front.
+  EdgePlanes bandPlanes(const std::array<std::uint32_t, 4>& port, const std::array<Vec3, 4>& a, const std::array<Vec3, 4>& b) const {
+    const std::array<Vec3, 4> p{position(port[0]), position(port[1]), position(port[2]), position(port[3])};
+    const Vec3 centroid = 0.25 * (p[0] + p[1] + p[2] + p[3]);
+    Vec3 up = glm::cross(p[2] - p[0], p[3] - p[1]);
+    if (glm::dot(up, 0.25 * (b[0] + b[1] + b[2] + b[3]) - centroid) < 0.0) up = -up;
+    const std::vector<Vec3> front{a[0], a[1], a[2], a[3], b[0], b[1], b[2], b[3]};
+    EdgePlanes planes;
+    for (std::size_t k = 0; k < 4; ++k) {
+      const std::size_t j = (k + 1) % 4;
+      planes[k] = edgePlane(p[k], p[j], {port[k], port[j]}, up, centroid - p[k], front, {}, planeMargin(glm::distance(a[0], a[2])));
+    }
+    return planes;
+  }
+
   // Whether any of quads c (corners not made yet carry kUnmade indices) meets a face of the parent beyond what
   // they share.
   bool quadsCutParent(const PortStart& start, const std::array<QuadCorners, 4>& c) {
@@ -451,11 +500,14 @@ class Builder {
     std::array<Box, 4> boxes;
     for (std::size_t k = 0; k < 4; ++k) boxes[k] = boxOf(c[k].p);
     const Box all = boxOf(std::array<Vec3, 8>{c[0].p[0], c[0].p[1], c[1].p[1], c[2].p[1], c[0].p[2], c[0].p[3], c[2].p[2], c[2].p[3]});
+    const EdgePlanes planes = insetPlanes(c);
+    const double margin = planeMargin(glm::distance(c[0].p[0], c[2].p[0]));
     for (std::uint32_t f : grid.candidates(all)) {
       const Box& faceBox = grid.box(f);
       if (!faceBox.overlaps(all)) continue;
       const auto& q = out_.mesh.quads[start.parentFacesBegin + f];
       const QuadCorners face{{position(q[0]), position(q[1]), position(q[2]), position(q[3])}, q};
+      if (behindOne(planes, face, margin)) continue;
       for (std::size_t k = 0; k < 4; ++k) {
         if (faceBox.overlaps(boxes[k]) && quadsMeet(c[k], face)) return true;
       }
@@ -472,10 +524,25 @@ class Builder {
     bool above = quick;
     for (const Vec3& c : b) above = above && glm::dot(c - inset_->center, inset_->normal) > inset_->tolerance;
     if (above) return false;
-    for (std::size_t i = 0; i < 4; ++i) {
-      const QuadCorners side = unmadeSide(a, port, b, i);
-      for (const QuadCorners& around : inset_->around) {
-        if (quadsMeet(side, around)) return true;
+    const Vec3 middle = 0.25 * (a[0] + a[1] + a[2] + a[3]);
+    double reach = 0.0;  // the band's and the inset's span
+    for (const Vec3& x : b) reach = std::max(reach, glm::distance(x, middle));
+    for (const QuadCorners& around : inset_->around) reach = std::max(reach, glm::distance(around.p[0], middle));
+    const double margin = planeMargin(2.0 * reach);
+    for (std::size_t k = 0; k < 4; ++k) {
+      // Quad k of the inset runs from the port's edge k in to the inset's edge k: a plane through the inset's edge
+      // with the band in front and the port's edge behind leaves them that edge alone in common.
+      const QuadCorners& around = inset_->around[k];
+      std::vector<Vec3> front{b[0], b[1], b[2], b[3]};
+      for (std::size_t i = 0; i < 4; ++i) {
+        if (port[i] != around.index[2] && port[i] != around.index[3]) front.push_back(a[i]);
+      }
+      if (edgePlane(around.p[3], around.p[2], {around.index[3], around.index[2]}, inset_->normal, middle - around.p[3], front,
+                    {around.p[0], around.p[1]}, margin)) {
+        continue;
+      }
+      for (std::size_t i = 0; i < 4; ++i) {
+        if (quadsMeet(unmadeSide(a, port, b, i), around)) return true;
       }
     }
     return false;
@@ -558,10 +625,15 @@ class Builder {
       sides[i] = {a[i], a[j], b[j], b[i]};
       sideBoxes[i] = boxOf(sides[i]);
     }
+    // A band off the port (not from its corners) is usually clear of the port's neighbours by a plane.
+    std::optional<EdgePlanes> planes;
+    if (!port) planes = bandPlanes(start.port, a, b);
+    const double margin = planeMargin(glm::distance(a[0], a[2]));
     for (std::uint32_t f : grid.candidates(band)) {
       const Box& faceBox = grid.box(f);
       const auto& q = out_.mesh.quads[start.parentFacesBegin + f];
       const std::array<Vec3, 4> face{position(q[0]), position(q[1]), position(q[2]), position(q[3])};
+      if (planes && behindOne(*planes, QuadCorners{face, q}, margin)) continue;
       for (int k = 0; k < 4; ++k) {
         const auto i = static_cast<std::size_t>(k), j = static_cast<std::size_t>((k + 1) % 4);
         const std::array<Vec3, 4>& side = sides[i];
