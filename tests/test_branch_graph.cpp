@@ -299,6 +299,24 @@ TEST_CASE("a thin child leaves through a square inset in its parent's side, on t
     CHECK(radial > 0.4 * MeshOptions{}.limitCompensation * std::sqrt(0.5) * 0.99);
     CHECK(radial < 0.4 * MeshOptions{}.limitCompensation * 1.01);
   }
+  // The trunk's bark runs on around the twig: the side's corners keep the trunk's own texture (a ring corner's u
+  // and flip coordinate, nothing of the twig's averaged in), and the inset's corners lie within the side's texture.
+  glm::vec3 lo(1e9f), hi(-1e9f);
+  for (std::size_t k = 0; k < 4; ++k) {
+    const glm::vec3 side = inset.mesh.uvw[inset.mesh.quads[first + k][0]];
+    CHECK((side.x == 0.0f || side.x == 0.5f || side.x == 1.0f));
+    CHECK((side.z == 0.0f || side.z == 1.0f || side.z == -1.0f));
+    lo = glm::min(lo, side);
+    hi = glm::max(hi, side);
+  }
+  for (std::size_t k = 0; k < 4; ++k) {
+    const glm::vec3 inner = inset.mesh.uvw[inset.mesh.quads[first + k][3]];
+    CHECK(glm::all(glm::greaterThanEqual(inner, lo - 1e-6f)));
+    CHECK(glm::all(glm::lessThanEqual(inner, hi + 1e-6f)));
+  }
+  const auto ring = std::find_if(inset.rings.begin(), inset.rings.end(), [](const MeshRing& r) { return r.stem == 1; });
+  REQUIRE(ring != inset.rings.end());
+  CHECK(ring->inset);
 }
 
 TEST_CASE("a stem bending tighter than its radius leaves out the cross sections whose bands would run backwards", "[graph][mesh]") {

@@ -104,7 +104,7 @@ TEST_CASE("the mesher's own crossings stay at or below what was measured for eve
 TEST_CASE("the flip coordinate is 0 at front and back and +-1 at the sides of every unshared corner", "[mesh]") {
   const TreeMesh tree = buildTreeMesh(grow(test::loadPreset("quaking-aspen"), 3));
   const std::vector<int> valence = valences(tree.mesh);
-  std::size_t exact = 0, shared = 0;
+  std::size_t exact = 0, shared = 0, insets = 0;
   for (const MeshRing& ring : tree.rings) {
     for (int k = 0; k < 4; ++k) {
       const std::uint32_t v = ring.vertices[static_cast<std::size_t>(k)];
@@ -112,7 +112,9 @@ TEST_CASE("the flip coordinate is 0 at front and back and +-1 at the sides of ev
       CHECK(uvw.x >= 0.0f);
       CHECK(uvw.x <= 1.0f);
       CHECK(std::fabs(uvw.z) <= 1.0f);
-      if (valence[v] <= 4) {  // not a port corner: nothing averaged into it
+      if (ring.inset) {  // on the parent's side, with the parent's texture (tested with the inset)
+        ++insets;
+      } else if (valence[v] <= 4) {  // not a port corner: nothing averaged into it
         CHECK(uvw.x == static_cast<float>(kRingU[static_cast<std::size_t>(k)]));
         CHECK(uvw.z == static_cast<float>(kRingFlip[static_cast<std::size_t>(k)]));
         ++exact;
@@ -123,6 +125,7 @@ TEST_CASE("the flip coordinate is 0 at front and back and +-1 at the sides of ev
   }
   CHECK(exact > 10 * shared / 2);
   CHECK(shared > 0);
+  CHECK(insets > 0);
 }
 
 TEST_CASE("texture v grows monotonically along every branch", "[mesh]") {

@@ -140,6 +140,14 @@ class Builder {
     ++uvwCount_[v];
   }
 
+  // The child's texture at its port's corners, averaged with the parent's there (child-then-parent averaging). An
+  // inset keeps the parent's: its corners lie on the parent's side, whose bark runs on undisturbed around the child
+  // (the child's coordinates there squeezed the bark's furrows into rings around the inset).
+  void addPortUvw(const std::array<std::uint32_t, 4>& port, double tex) {
+    if (inset_) return;
+    for (int k = 0; k < 4; ++k) addUvw(port[static_cast<std::size_t>(k)], k, tex);
+  }
+
   Vec3 position(std::uint32_t v) const { return Vec3(out_.mesh.positions[v]); }
 
   Ring emitRing(int stem, const Vec3& center, const RingFrame& frame, double radius, double tex, double arc = -1.0) {
@@ -301,7 +309,7 @@ class Builder {
         const std::array<Vec3, 4> corners{c + offsets[0], c + offsets[1], c + offsets[2], c + offsets[3]};
         if (!bandCrossesParent(start, portCorners, corners, &q) && !bandFolds(portCorners, q, corners) &&
             !bandMeetsInset(portCorners, q, corners)) {
-          for (int k = 0; k < 4; ++k) addUvw(q[static_cast<std::size_t>(k)], k, port.tex);  // child-then-parent averaging
+          addPortUvw(q, port.tex);
           const Ring exit = emitRing(stem, c, frame, exitRadius, port.tex + barkTextureAdvance(glm::distance(c, center), exitRadius), s);
           band(port, exit);
           sLo = sUnclear = s;
@@ -343,7 +351,7 @@ class Builder {
       if (best == 2) break;
     }
     const Vec3 exitCenter = center + exitDir * e;
-    for (int k = 0; k < 4; ++k) addUvw(q[static_cast<std::size_t>(k)], k, port.tex);  // child-then-parent averaging
+    addPortUvw(q, port.tex);
 
     const RingFrame exitFrame = transportFrame(port.frame, directionOr(exitDir + d, exitDir));
     sLo = tubeStartPast(poly, start, exitCenter);
@@ -377,7 +385,7 @@ class Builder {
       if (glm::dot(corners[k] - port.center, normal) <= 0.0 || glm::dot(c[k] - center, frame.T) >= 0.0) return std::nullopt;
     }
     if (bandFolds(c, port.v, corners) || bandMeetsInset(c, port.v, corners, false)) return std::nullopt;
-    for (int k = 0; k < 4; ++k) addUvw(port.v[static_cast<std::size_t>(k)], k, port.tex);  // child-then-parent averaging
+    addPortUvw(port.v, port.tex);
     const Ring first = emitRing(stem, center, frame, radius, port.tex + barkTextureAdvance(glm::distance(center, port.center), rc), s);
     band(port, first);
     sLo = s;
@@ -422,23 +430,26 @@ class Builder {
     const QuadMesh& m = out_.mesh;
     std::array<std::uint32_t, 4> inner{};
     for (std::size_t k = 0; k < 4; ++k) {
-      Vec3 tangent(0.0);
+      Vec3 tangent(0.0), uvw(0.0);
       double radius = 0.0;
       for (std::size_t c = 0; c < 4; ++c) {
         tangent += weights[k][c] * Vec3(m.tangents[q[c]]);
         radius += weights[k][c] * m.radius[q[c]];
+        uvw += weights[k][c] * uvwSum_[q[c]] / static_cast<double>(std::max(1, uvwCount_[q[c]]));
       }
       inner[k] = addVertex(corners[k], radius, m.level[q[0]], directionOr(tangent, Vec3(m.tangents[q[0]])));
+      // The side's texture where the inset's corner lies on it, as the parent's face had it there.
+      uvwSum_[inner[k]] = uvw;
+      uvwCount_[inner[k]] = 1;
     }
     // The inset is the child's first cross section (off its skeleton): its connection, where the joint checks look.
     out_.rings.push_back(MeshRing{currentStem_, inner, 0.25 * (corners[0] + corners[1] + corners[2] + corners[3]), start.tex,
-                                  opt_.insetCollar * poly.radius(0.0), -1.0});
+                                  opt_.insetCollar * poly.radius(0.0), -1.0, true});
     double offPlane = 0.0;
     for (const Vec3& c : p) offPlane = std::max(offPlane, 2.0 * std::abs(glm::dot(c - center, normal)));
     inset_.emplace(Inset{{}, center, normal, offPlane + 1e-6 * (w + h)});
     for (std::size_t k = 0; k < 4; ++k) {
       const std::size_t j = (k + 1) % 4;
-      addUvw(q[k], static_cast<int>(k), start.tex);  // the side's corners average in the child's texture as before
       addQuad(q[k], q[j], inner[j], inner[k]);
       inset_->around[k] = QuadCorners{{p[k], p[j], corners[j], corners[k]}, {q[k], q[j], inner[j], inner[k]}};
     }

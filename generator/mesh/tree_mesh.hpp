@@ -17,6 +17,7 @@ struct MeshRing {
   double v = 0;
   double radius = 0;  // skeleton radius (the corners sit at limitCompensation times this)
   double arc = -1;    // arc length along its stem's skeleton (-1: a neck or sub-box ring, off the skeleton)
+  bool inset = false; // a square inset in the parent's side: its corners carry the parent's texture
 };
 
 // A branch point as built: the parent stem, the children connected there and how.
