@@ -142,12 +142,13 @@ TEST_CASE("an edge plane: none where no tilt separates, and a quad behind it nev
   const std::array<std::uint32_t, 2> edge{0, 1};
   // In front: up and inwards; behind: beyond the edge and low. A point on the edge's line, or a front point
   // beyond the edge lower than a back point beyond it, leaves no plane.
-  const auto plane = edgePlane(p0, p1, edge, up, inward, {{0.5, 1.0, 0.0}, {0.5, -0.5, 1.0}}, {{0.5, -1.0, 0.2}}, 1e-6);
+  using Points = std::vector<Vec3>;
+  const auto plane = edgePlane(p0, p1, edge, up, inward, Points{{0.5, 1.0, 0.0}, {0.5, -0.5, 1.0}}, Points{{0.5, -1.0, 0.2}}, 1e-6);
   REQUIRE(plane);
   CHECK(plane->height({0.5, 1.0, 0.0}) > 0.0);
   CHECK(plane->height({0.5, -1.0, 0.2}) < 0.0);
-  CHECK_FALSE(edgePlane(p0, p1, edge, up, inward, {{2.0, 0.0, 0.0}}, {}, 1e-6));
-  CHECK_FALSE(edgePlane(p0, p1, edge, up, inward, {{0.5, -1.0, 0.5}}, {{0.5, -2.0, 2.0}}, 1e-6));
+  CHECK_FALSE(edgePlane(p0, p1, edge, up, inward, Points{{2.0, 0.0, 0.0}}, {}, 1e-6));
+  CHECK_FALSE(edgePlane(p0, p1, edge, up, inward, Points{{0.5, -1.0, 0.5}}, Points{{0.5, -2.0, 2.0}}, 1e-6));
   // Random quads on the edge (and some off it): whenever the plane puts one behind, quadsMeet finds no crossing,
   // also for near-folds (the second quad turned back within a few fold angles of the first).
   std::mt19937 random(7);
@@ -178,7 +179,7 @@ TEST_CASE("an edge plane: none where no tilt separates, and a quad behind it nev
     const double margin = 2e-3 * 3.0;
     // On a shared edge the quad behind is given (as a band against an inset's quad), else only the front (as the
     // parent's faces against an inset).
-    const auto found = edgePlane(p0, p1, edge, up, inward, {a2, a3}, shareEdge ? std::vector<Vec3>{b[2], b[3]} : std::vector<Vec3>{}, margin);
+    const auto found = edgePlane(p0, p1, edge, up, inward, Points{a2, a3}, shareEdge ? Points{b[2], b[3]} : Points{}, margin);
     const bool meets = quadsMeet(front, back).has_value();
     met += meets ? 1 : 0;
     if (found && found->behind(b, backIds, margin)) {

@@ -19,7 +19,7 @@ bool EdgePlane::behind(const std::array<Vec3, 4>& p, const std::array<std::uint3
 }
 
 std::optional<EdgePlane> edgePlane(const Vec3& p0, const Vec3& p1, const std::array<std::uint32_t, 2>& ids, const Vec3& up,
-                                   const Vec3& inward, const std::vector<Vec3>& front, const std::vector<Vec3>& back, double margin) {
+                                   const Vec3& inward, std::span<const Vec3> front, std::span<const Vec3> back, double margin) {
   const Vec3 e = p1 - p0;
   // m: across the edge towards `inward`; u: `up` made perpendicular to the edge and to m.
   Vec3 m = glm::cross(up, e);

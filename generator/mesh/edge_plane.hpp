@@ -5,7 +5,7 @@
 #include <array>
 #include <cstdint>
 #include <optional>
-#include <vector>
+#include <span>
 
 #include "growth/math.hpp"
 
@@ -25,6 +25,6 @@ struct EdgePlane {
 // way) so that every point of `front` lies more than margin in front of it and every point of `back` more than margin
 // behind; the tilt is the middle of those allowed, or well towards upright when nothing bounds it. None if no tilt does.
 std::optional<EdgePlane> edgePlane(const Vec3& p0, const Vec3& p1, const std::array<std::uint32_t, 2>& ids, const Vec3& up,
-                                   const Vec3& inward, const std::vector<Vec3>& front, const std::vector<Vec3>& back, double margin);
+                                   const Vec3& inward, std::span<const Vec3> front, std::span<const Vec3> back, double margin);
 
 }  // namespace arbor

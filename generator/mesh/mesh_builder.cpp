@@ -478,10 +478,11 @@ class Builder {
     const double margin = planeMargin(glm::distance(c[0].p[0], c[2].p[0]));
     EdgePlanes planes;
     for (std::size_t k = 0; k < 4; ++k) {
-      std::vector<Vec3> front;
+      std::array<Vec3, 6> front;
+      std::size_t n = 0;
       for (std::size_t i = 0; i < 4; ++i) {
-        if (i != k && i != (k + 1) % 4) front.push_back(c[i].p[0]);
-        front.push_back(c[i].p[3]);
+        if (i != k && i != (k + 1) % 4) front[n++] = c[i].p[0];
+        front[n++] = c[i].p[3];
       }
       planes[k] = edgePlane(c[k].p[0], c[k].p[1], {c[k].index[0], c[k].index[1]}, up, centroid - c[k].p[0], front, {}, margin);
     }
@@ -494,7 +495,7 @@ class Builder {
     const Vec3 centroid = 0.25 * (p[0] + p[1] + p[2] + p[3]);
     Vec3 up = glm::cross(p[2] - p[0], p[3] - p[1]);
     if (glm::dot(up, 0.25 * (b[0] + b[1] + b[2] + b[3]) - centroid) < 0.0) up = -up;
-    const std::vector<Vec3> front{a[0], a[1], a[2], a[3], b[0], b[1], b[2], b[3]};
+    const std::array<Vec3, 8> front{a[0], a[1], a[2], a[3], b[0], b[1], b[2], b[3]};
     EdgePlanes planes;
     for (std::size_t k = 0; k < 4; ++k) {
       const std::size_t j = (k + 1) % 4;
@@ -544,12 +545,14 @@ class Builder {
       // Quad k of the inset runs from the port's edge k in to the inset's edge k: a plane through the inset's edge
       // with the band in front and the port's edge behind leaves them that edge alone in common.
       const QuadCorners& around = inset_->around[k];
-      std::vector<Vec3> front{b[0], b[1], b[2], b[3]};
+      std::array<Vec3, 8> front{b[0], b[1], b[2], b[3]};
+      std::size_t n = 4;
       for (std::size_t i = 0; i < 4; ++i) {
-        if (port[i] != around.index[2] && port[i] != around.index[3]) front.push_back(a[i]);
+        if (port[i] != around.index[2] && port[i] != around.index[3]) front[n++] = a[i];
       }
-      if (edgePlane(around.p[3], around.p[2], {around.index[3], around.index[2]}, inset_->normal, middle - around.p[3], front,
-                    {around.p[0], around.p[1]}, margin)) {
+      const std::array<Vec3, 2> behind{around.p[0], around.p[1]};
+      if (edgePlane(around.p[3], around.p[2], {around.index[3], around.index[2]}, inset_->normal, middle - around.p[3],
+                    std::span<const Vec3>(front.data(), n), behind, margin)) {
         continue;
       }
       for (std::size_t i = 0; i < 4; ++i) {
