@@ -265,11 +265,21 @@ TEST_CASE("a stem crossing a branch's wood where the branch's child has its coll
   CHECK(report.hits[0].reachA > 10.0);  // far from the twig's own axis: its wood does not explain it
   CHECK(report.skeletonMade == 1);      // stem 1 crosses stem 0 there, and the collar stands for stem 0's surface
 
-  // Stem 1 a sibling of the twig (also grown from stem 0): it crosses stem 0 by construction, so the pair is
-  // the mesher's.
+  // Stem 1 a sibling of the twig (also grown from stem 0) whose skeleton passes through stem 0 far from where it
+  // leaves it (its base 1 m away): its wood crosses stem 0's there, as Weber-Penn allows, so the pair is the
+  // skeleton's as for any other stem.
   skeleton.stems[1].parentStem = 0;
   skeleton.stems[1].attachNode = 1;
   report = checkSelfIntersections(tree, skeleton);
+  REQUIRE(report.pairs == 1);
+  CHECK(report.skeletonMade == 1);
+
+  // The sibling leaving stem 0 right there (its base on stem 0's axis under the collar): it crosses stem 0 by
+  // construction at its own joint, where its capsules have not begun, so the pair is the mesher's.
+  Skeleton atJoint = skeleton;
+  for (SkeletonNode& n : atJoint.nodes)
+    if (n.stem == 1) n.world.position = n.kind == NodeKind::Base ? Vec3(0.0) : Vec3(0, 1, 0);
+  report = checkSelfIntersections(tree, atJoint);
   REQUIRE(report.pairs == 1);
   CHECK(report.meshMade == 1);
 

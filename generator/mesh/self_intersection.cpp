@@ -91,9 +91,13 @@ int collarParent(const Skeleton& skeleton, int stem) {
   return s.cloneOf >= 0 ? s.cloneOf : s.parentStem;
 }
 
-// x crossing the collar of a child of p is x crossing p only if x is not p, nor p's child or clone.
+// x crossing the collar of a child of p is x crossing p only if x is not p, nor p's parent or clone. (x may be
+// another child of p: its capsules start where it leaves p's wood, so its own joint never counts as crossing p.)
 bool unrelatedTo(const Skeleton& skeleton, int x, int p) {
-  return x != p && relationOf(skeleton, x, p) == StemRelation::Other && collarParent(skeleton, x) != p;
+  if (x == p || x < 0) return false;
+  const SkeletonStem& sx = skeleton.stems[static_cast<std::size_t>(x)];
+  if (sx.parentStem == p && sx.cloneOf < 0) return true;
+  return relationOf(skeleton, x, p) == StemRelation::Other && collarParent(skeleton, x) != p;
 }
 
 SelfIntersectionReport summarise(std::vector<QuadPairHit> hits, std::size_t quads, bool classified) {
