@@ -3,7 +3,6 @@
 // slabs (connection.cpp). Every child tube starts from four vertices of its parent, so the result is one
 // closed mesh without a single branch cylinder stuck inside another.
 #include <algorithm>
-#include <limits>
 #include <cmath>
 #include <memory>
 #include <optional>
