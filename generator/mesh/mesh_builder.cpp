@@ -580,10 +580,10 @@ class Builder {
     return poly.firstClearOf(start.grandPoint, start.grandAxis, std::sqrt(0.5) * start.grandReach + radius * opt_.limitCompensation);
   }
 
-  // Corners of the cross section a stem would get at arc length s, continuing from `from`.
-  std::array<Vec3, 4> ringCorners(const StemPolyline& poly, const RingFrame& from, double s) const {
+  // Corners of the cross section a stem would get at arc length s, continuing from `from` (at least minRadius).
+  std::array<Vec3, 4> ringCorners(const StemPolyline& poly, const RingFrame& from, double s, double minRadius = 0.0) const {
     const RingFrame frame = transportFrame(from, poly.direction(s));
-    const auto offsets = ringOffsets(frame, std::max(poly.radius(s), 1e-5 * sk_.treeScale) * opt_.limitCompensation);
+    const auto offsets = ringOffsets(frame, std::max({poly.radius(s), minRadius, 1e-5 * sk_.treeScale}) * opt_.limitCompensation);
     const Vec3 c = poly.position(s);
     return {c + offsets[0], c + offsets[1], c + offsets[2], c + offsets[3]};
   }
@@ -902,7 +902,21 @@ class Builder {
         return;
       }
       if (role == -3) {
-        const Ring lo = makeRing(stem, poly, last, s, splitSlab.need);
+        // A split slab right after the tube's start (a short stem): its band from there, a quarter radius long,
+        // runs backwards where the skeleton turns; the slab moves on until that band runs forwards (or keeps the
+        // last cross section's direction after two radii): the larch file's folds.
+        double at = s;
+        const double step = 0.25 * std::max(poly.radius(std::min(s, sEnd)), splitSlab.need);
+        auto ahead = [&](double x) {
+          const RingFrame turned = transportFrame(last.frame, poly.direction(x));
+          return bandAhead(last, ringCorners(poly, last.frame, x, splitSlab.need), poly.position(x), turned.T);
+        };
+        while (!ahead(at) && at < s + 8.0 * step) at += step;
+        const bool keep = !ahead(at);
+        if (keep) at = s;
+        splitSlab.hi += at - splitSlab.lo;
+        splitSlab.lo = at;
+        const Ring lo = makeRing(stem, poly, last, at, splitSlab.need, keep);
         band(last, lo);
         connectSplit(stem, poly, lo, splitSlab);
         return;
@@ -927,10 +941,11 @@ class Builder {
     return need;
   }
 
-  Ring makeRing(int stem, const StemPolyline& poly, const Ring& last, double s, double minRadius = 0.0) {
+  // keepFrame: the last cross section's frame instead of one turned to the skeleton's direction at s.
+  Ring makeRing(int stem, const StemPolyline& poly, const Ring& last, double s, double minRadius = 0.0, bool keepFrame = false) {
     const Vec3 p = poly.position(s);
     const double r = std::max({poly.radius(s), minRadius, 1e-5 * sk_.treeScale});
-    const RingFrame frame = transportFrame(last.frame, poly.direction(s));
+    const RingFrame frame = keepFrame ? last.frame : transportFrame(last.frame, poly.direction(s));
     return emitRing(stem, p, frame, r, last.tex + barkTextureAdvance(glm::distance(p, last.center), 0.5 * (r + last.radius)), s);
   }
 
