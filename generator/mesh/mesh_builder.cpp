@@ -895,7 +895,17 @@ class Builder {
         // Tip: a last cross section (never thinner than a third of the one before) and a cap.
         const Vec3 p = poly.position(s);
         const double r = std::max(poly.radius(std::min(s, sEnd)), 0.35 * last.radius);
-        const RingFrame frame = transportFrame(last.frame, poly.endDirection());
+        RingFrame frame = transportFrame(last.frame, poly.endDirection());
+        // Turned to a tip that bends away within a radius of the last cross section, its band ran backwards and
+        // folded: the tip turns half-way then, or keeps the last cross section's direction.
+        auto ahead = [&](const RingFrame& f) {
+          const auto offsets = ringOffsets(f, r * opt_.limitCompensation);
+          return bandAhead(last, {p + offsets[0], p + offsets[1], p + offsets[2], p + offsets[3]}, p, f.T);
+        };
+        if (!ahead(frame)) {
+          const RingFrame half = transportFrame(last.frame, directionOr(last.frame.T + poly.endDirection(), last.frame.T));
+          frame = ahead(half) ? half : last.frame;
+        }
         const Ring tip = emitRing(stem, p, frame, r, last.tex + barkTextureAdvance(glm::distance(p, last.center), r), s);
         band(last, tip);
         addQuad(tip.v[0], tip.v[1], tip.v[2], tip.v[3]);
