@@ -346,6 +346,31 @@ TEST_CASE("a stem bending tighter than its radius leaves out the cross sections 
   CHECK(checkSelfIntersections(tree, s).folds == 0);
 }
 
+TEST_CASE("a tip bending away within a radius of the cross section before it turns only as far as its band runs forwards", "[graph][mesh]") {
+  // A stem of radius 0.1 whose last edge, 0.04 m long, turns through 60 degrees.
+  BranchGraph g;
+  g.nodes = {at(0, 0, 0, -1, 0.1), at(0, 0, 1, 0, 0.1), at(0.0346, 0, 1.02, 1, 0.03)};
+  const Skeleton s = graphToSkeleton(g, unmerged());
+  REQUIRE(s.stems.size() == 1);
+  const TreeMesh tree = buildTreeMesh(s);
+  const MeshTopologyReport r = checkTopology(tree.mesh);
+  CHECK(r.boundaryEdges == 0);
+  CHECK(r.eulerCharacteristic == 2);
+  REQUIRE(tree.rings.size() >= 2);
+  const MeshRing &before = tree.rings[tree.rings.size() - 2], &tip = tree.rings.back();
+  // The tip's corners all lie ahead of the cross section before it (that ring's direction from its corners) and
+  // that ring's behind the tip's: the band runs forwards, so nothing folds.
+  auto corner = [&](const MeshRing& ring, std::size_t k) { return Vec3(tree.mesh.positions[ring.vertices[k]]); };
+  auto direction = [&](const MeshRing& ring) {
+    return glm::normalize(glm::cross(corner(ring, 0) - corner(ring, 2), corner(ring, 1) - corner(ring, 3)));
+  };
+  for (std::size_t k = 0; k < 4; ++k) {
+    CHECK(glm::dot(corner(tip, k) - before.center, direction(before)) > 0.0);
+    CHECK(glm::dot(corner(before, k) - tip.center, direction(tip)) < 0.0);
+  }
+  CHECK(checkSelfIntersections(tree, s).folds == 0);
+}
+
 TEST_CASE("smoothing moves no branch point, tip or root, and does move the rest", "[graph]") {
   GraphOptions o = unmerged();
   o.smoothingPasses = 5;
