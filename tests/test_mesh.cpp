@@ -75,8 +75,9 @@ TEST_CASE("the mesher's own crossings stay at or below what was measured for eve
   // the sums over seeds 1-3 of 2026-12-03 (thin children leaving through inset ports, steep ones with no neck: the
   // poplar 410 -> 114, the palm 457 -> 140, the tupelo 158 -> 126, all trees 58,618 -> 47,537; then siblings grown
   // back into their parent classified as any stem: the oak 251 -> 232, the palm 140 -> 108; then split slabs moved on
-  // until their first band runs forwards, and tips turning half-way where a full turn folds: the willow 2,000 ->
-  // 1,888, its folds 42 -> 0) plus a tenth: a
+  // until their first band runs forwards, tips turning half-way where a full turn folds, and the cross section
+  // after a collar moving on until its band runs forwards: the willow 2,000 -> 1,888, its folds 42 -> 0, the
+  // poplar 114 -> 102, its folds 4 -> 0) plus a tenth: a
   // change to the mesher that makes more fails here. Three seeds, not one: any change to a joint moves one tree's count by a
   // fifth either way (the exact clearance of a child's skeleton: the poplar's seed 1 went 138 -> 161, seed 2
   // 115 -> 103), the sum by a few percent.
@@ -85,7 +86,7 @@ TEST_CASE("the mesher's own crossings stay at or below what was measured for eve
     std::size_t meshMade, folds, necks;
   };
   for (const Measured& m : {Measured{"black-tupelo", 126, 1, 0}, Measured{"ca-black-oak", 232, 0, 113},
-                            Measured{"lombardy-poplar", 114, 4, 8}, Measured{"palm", 108, 0, 0},
+                            Measured{"lombardy-poplar", 102, 0, 8}, Measured{"palm", 108, 0, 0},
                             Measured{"quaking-aspen", 40, 0, 25}, Measured{"weeping-willow", 1888, 0, 72}}) {
     INFO(m.preset);
     std::size_t meshMade = 0, folds = 0, necks = 0, skeletonMade = 0;

@@ -870,9 +870,17 @@ class Builder {
     // leaving at more than 30 degrees: one running along its parent (barley's awns, a fastigiate poplar) would
     // bend back to its skeleton beside its neighbours' necks (barley's mesh-made pairs 3,647 with it, 340 without).
     const bool steep = start && glm::length(glm::cross(poly.startDirection(), start->parentAxis)) > 0.5;
-    if (steep && sLo < stations.front().first - 4.0 * gap(sLo) &&
-        glm::dot(poly.position(sLo) - last.center, last.frame.T) > 0.0) {
-      last = advance(stem, poly, last, sLo);
+    if (steep && sLo < stations.front().first - 4.0 * gap(sLo) && glm::dot(poly.position(sLo) - last.center, last.frame.T) > 0.0) {
+      // Where the skeleton turns there, the cross section moves on by quarter radii until its band runs forwards.
+      double at = sLo;
+      auto ahead = [&](double x) {
+        return bandAhead(last, ringCorners(poly, last.frame, x), poly.position(x), transportFrame(last.frame, poly.direction(x)).T);
+      };
+      while (!ahead(at) && at + gap(at) < stations.front().first - 4.0 * gap(sLo)) at += 0.5 * gap(at);
+      if (ahead(at)) {
+        last = advance(stem, poly, last, at);
+        sLo = at;
+      }
     }
     double previousS = sLo;
     for (const auto& [s, role] : stations) {
