@@ -45,6 +45,35 @@ GraphOptions unmerged() {
   return o;
 }
 
+// One stem from a graph (not merged), meshed: the mesh must be closed.
+struct OneStem {
+  Skeleton skeleton;
+  TreeMesh tree;
+};
+
+OneStem meshOneStem(const BranchGraph& g) {
+  OneStem one{graphToSkeleton(g, unmerged()), {}};
+  REQUIRE(one.skeleton.stems.size() == 1);
+  one.tree = buildTreeMesh(one.skeleton);
+  const MeshTopologyReport r = checkTopology(one.tree.mesh);
+  CHECK(r.boundaryEdges == 0);
+  CHECK(r.eulerCharacteristic == 2);
+  return one;
+}
+
+// The band from ring a to ring b runs forwards: b's corners ahead of a (its direction from its corners,
+// counter-clockwise about it) and a's behind b.
+void checkBandForwards(const TreeMesh& tree, const MeshRing& a, const MeshRing& b) {
+  auto corner = [&](const MeshRing& ring, std::size_t k) { return Vec3(tree.mesh.positions[ring.vertices[k]]); };
+  auto direction = [&](const MeshRing& ring) {
+    return glm::normalize(glm::cross(corner(ring, 0) - corner(ring, 2), corner(ring, 1) - corner(ring, 3)));
+  };
+  for (std::size_t k = 0; k < 4; ++k) {
+    CHECK(glm::dot(corner(b, k) - a.center, direction(a)) > 0.0);
+    CHECK(glm::dot(corner(a, k) - b.center, direction(b)) < 0.0);
+  }
+}
+
 std::vector<int> childCounts(const BranchGraph& g) {
   std::vector<int> count(g.nodes.size(), 0);
   for (const BranchNode& n : g.nodes)
@@ -324,51 +353,23 @@ TEST_CASE("a stem bending tighter than its radius leaves out the cross sections 
   BranchGraph g;
   g.nodes = {at(0, 0, 0, -1, 0.15), at(0, 0, 1, 0, 0.15), at(0.02, 0, 1.06, 1, 0.15), at(0.06, 0, 1.1, 2, 0.15),
              at(0.12, 0, 1.12, 3, 0.15), at(0.8, 0, 1.12, 4, 0.1)};
-  const Skeleton s = graphToSkeleton(g, unmerged());
-  REQUIRE(s.stems.size() == 1);
-  const TreeMesh tree = buildTreeMesh(s);
-  const MeshTopologyReport r = checkTopology(tree.mesh);
-  CHECK(r.boundaryEdges == 0);
-  CHECK(r.eulerCharacteristic == 2);
-  auto corner = [&](const MeshRing& ring, std::size_t k) { return Vec3(tree.mesh.positions[ring.vertices[k]]); };
-  // A ring's direction from its corners (counter-clockwise about it).
-  auto direction = [&](const MeshRing& ring) {
-    return glm::normalize(glm::cross(corner(ring, 0) - corner(ring, 2), corner(ring, 1) - corner(ring, 3)));
-  };
+  const OneStem one = meshOneStem(g);
+  const TreeMesh& tree = one.tree;
   REQUIRE(tree.rings.size() >= 3);
-  for (std::size_t i = 1; i < tree.rings.size(); ++i) {
-    const MeshRing &a = tree.rings[i - 1], &b = tree.rings[i];
-    for (std::size_t k = 0; k < 4; ++k) {
-      CHECK(glm::dot(corner(b, k) - a.center, direction(a)) > 0.0);
-      CHECK(glm::dot(corner(a, k) - b.center, direction(b)) < 0.0);
-    }
-  }
-  CHECK(checkSelfIntersections(tree, s).folds == 0);
+  for (std::size_t i = 1; i < tree.rings.size(); ++i) checkBandForwards(tree, tree.rings[i - 1], tree.rings[i]);
+  CHECK(checkSelfIntersections(tree, one.skeleton).folds == 0);
 }
 
 TEST_CASE("a tip bending away within a radius of the cross section before it turns only as far as its band runs forwards", "[graph][mesh]") {
   // A stem of radius 0.1 whose last edge, 0.04 m long, turns through 60 degrees.
   BranchGraph g;
   g.nodes = {at(0, 0, 0, -1, 0.1), at(0, 0, 1, 0, 0.1), at(0.0346, 0, 1.02, 1, 0.03)};
-  const Skeleton s = graphToSkeleton(g, unmerged());
-  REQUIRE(s.stems.size() == 1);
-  const TreeMesh tree = buildTreeMesh(s);
-  const MeshTopologyReport r = checkTopology(tree.mesh);
-  CHECK(r.boundaryEdges == 0);
-  CHECK(r.eulerCharacteristic == 2);
+  const OneStem one = meshOneStem(g);
+  const TreeMesh& tree = one.tree;
   REQUIRE(tree.rings.size() >= 2);
-  const MeshRing &before = tree.rings[tree.rings.size() - 2], &tip = tree.rings.back();
-  // The tip's corners all lie ahead of the cross section before it (that ring's direction from its corners) and
-  // that ring's behind the tip's: the band runs forwards, so nothing folds.
-  auto corner = [&](const MeshRing& ring, std::size_t k) { return Vec3(tree.mesh.positions[ring.vertices[k]]); };
-  auto direction = [&](const MeshRing& ring) {
-    return glm::normalize(glm::cross(corner(ring, 0) - corner(ring, 2), corner(ring, 1) - corner(ring, 3)));
-  };
-  for (std::size_t k = 0; k < 4; ++k) {
-    CHECK(glm::dot(corner(tip, k) - before.center, direction(before)) > 0.0);
-    CHECK(glm::dot(corner(before, k) - tip.center, direction(tip)) < 0.0);
-  }
-  CHECK(checkSelfIntersections(tree, s).folds == 0);
+  // The band from the cross section before the tip to the tip runs forwards, so nothing folds.
+  checkBandForwards(tree, tree.rings[tree.rings.size() - 2], tree.rings.back());
+  CHECK(checkSelfIntersections(tree, one.skeleton).folds == 0);
 }
 
 TEST_CASE("smoothing moves no branch point, tip or root, and does move the rest", "[graph]") {

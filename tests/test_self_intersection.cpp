@@ -182,7 +182,7 @@ TEST_CASE("an edge plane: none where no tilt separates, and a quad behind it nev
     const auto found = edgePlane(p0, p1, edge, up, inward, Points{a2, a3}, shareEdge ? Points{b[2], b[3]} : Points{}, margin);
     const bool meets = quadsMeet(front, back).has_value();
     met += meets ? 1 : 0;
-    if (found && found->behind(b, backIds, margin)) {
+    if (found && found->behind(b, backIds)) {
       ++separated;
       if (meets) FAIL("trial " << trial << ": a quad behind the plane meets the quad in front");
     }

@@ -10,7 +10,7 @@ namespace arbor {
 
 double EdgePlane::height(const Vec3& x) const { return glm::dot(normal, x - origin); }
 
-bool EdgePlane::behind(const std::array<Vec3, 4>& p, const std::array<std::uint32_t, 4>& ids, double margin) const {
+bool EdgePlane::behind(const std::array<Vec3, 4>& p, const std::array<std::uint32_t, 4>& ids) const {
   for (std::size_t i = 0; i < 4; ++i) {
     if (ids[i] == edge[0] || ids[i] == edge[1]) continue;
     if (!(height(p[i]) < -margin)) return false;
@@ -45,7 +45,7 @@ std::optional<EdgePlane> edgePlane(const Vec3& p0, const Vec3& p1, const std::ar
   for (const Vec3& x : back) bound(x, -1.0);
   if (!(lo < hi)) return std::nullopt;
   const double t = std::isinf(hi) ? 4.0 * lo + 4.0 : 0.5 * (lo + hi);
-  EdgePlane plane{glm::normalize(u + t * m), p0, ids};
+  const EdgePlane plane{glm::normalize(u + t * m), p0, ids, margin};
   for (const Vec3& x : front) {
     if (!(plane.height(x) > margin)) return std::nullopt;
   }

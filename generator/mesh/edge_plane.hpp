@@ -15,10 +15,11 @@ struct EdgePlane {
   Vec3 normal{0.0};  // unit, towards the points kept strictly in front
   Vec3 origin{0.0};  // the edge's first corner
   std::array<std::uint32_t, 2> edge{};  // the edge's vertex indices: corners a tested face may have on the plane
+  double margin = 0.0;                  // how far points must be in front or behind
 
   double height(const Vec3& x) const;
-  // Whether every corner of a quad (positions p, vertex indices ids) is strictly behind, but for the edge's own.
-  bool behind(const std::array<Vec3, 4>& p, const std::array<std::uint32_t, 4>& ids, double margin) const;
+  // Whether every corner of a quad (positions p, vertex indices ids) is more than margin behind, but for the edge's own.
+  bool behind(const std::array<Vec3, 4>& p, const std::array<std::uint32_t, 4>& ids) const;
 };
 
 // The plane through edge p0-p1 (vertex indices ids) tilted from `up` towards `inward` (both need only point the right

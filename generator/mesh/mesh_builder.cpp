@@ -458,9 +458,9 @@ class Builder {
   // Planes through a port's edges (EdgePlane): a face behind one of them cannot meet what is in front.
   using EdgePlanes = std::array<std::optional<EdgePlane>, 4>;
 
-  static bool behindOne(const EdgePlanes& planes, const QuadCorners& face, double margin) {
+  static bool behindOne(const EdgePlanes& planes, const QuadCorners& face) {
     for (const auto& plane : planes) {
-      if (plane && plane->behind(face.p, face.index, margin)) return true;
+      if (plane && plane->behind(face.p, face.index)) return true;
     }
     return false;
   }
@@ -512,13 +512,12 @@ class Builder {
     for (std::size_t k = 0; k < 4; ++k) boxes[k] = boxOf(c[k].p);
     const Box all = boxOf(std::array<Vec3, 8>{c[0].p[0], c[0].p[1], c[1].p[1], c[2].p[1], c[0].p[2], c[0].p[3], c[2].p[2], c[2].p[3]});
     const EdgePlanes planes = insetPlanes(c);
-    const double margin = planeMargin(glm::distance(c[0].p[0], c[2].p[0]));
     for (std::uint32_t f : grid.candidates(all)) {
       const Box& faceBox = grid.box(f);
       if (!faceBox.overlaps(all)) continue;
       const auto& q = out_.mesh.quads[start.parentFacesBegin + f];
       const QuadCorners face{{position(q[0]), position(q[1]), position(q[2]), position(q[3])}, q};
-      if (behindOne(planes, face, margin)) continue;
+      if (behindOne(planes, face)) continue;
       for (std::size_t k = 0; k < 4; ++k) {
         if (faceBox.overlaps(boxes[k]) && quadsMeet(c[k], face)) return true;
       }
@@ -641,12 +640,11 @@ class Builder {
     // A band off the port (not from its corners) is usually clear of the port's neighbours by a plane.
     std::optional<EdgePlanes> planes;
     if (!port) planes = bandPlanes(start.port, a, b);
-    const double margin = planeMargin(glm::distance(a[0], a[2]));
     for (std::uint32_t f : grid.candidates(band)) {
       const Box& faceBox = grid.box(f);
       const auto& q = out_.mesh.quads[start.parentFacesBegin + f];
       const std::array<Vec3, 4> face{position(q[0]), position(q[1]), position(q[2]), position(q[3])};
-      if (planes && behindOne(*planes, QuadCorners{face, q}, margin)) continue;
+      if (planes && behindOne(*planes, QuadCorners{face, q})) continue;
       for (int k = 0; k < 4; ++k) {
         const auto i = static_cast<std::size_t>(k), j = static_cast<std::size_t>((k + 1) % 4);
         const std::array<Vec3, 4>& side = sides[i];
@@ -873,11 +871,8 @@ class Builder {
     if (steep && sLo < stations.front().first - 4.0 * gap(sLo) && glm::dot(poly.position(sLo) - last.center, last.frame.T) > 0.0) {
       // Where the skeleton turns there, the cross section moves on by quarter radii until its band runs forwards.
       double at = sLo;
-      auto ahead = [&](double x) {
-        return bandAhead(last, ringCorners(poly, last.frame, x), poly.position(x), transportFrame(last.frame, poly.direction(x)).T);
-      };
-      while (!ahead(at) && at + gap(at) < stations.front().first - 4.0 * gap(sLo)) at += 0.5 * gap(at);
-      if (ahead(at)) {
+      while (!ringAhead(poly, last, at) && at + gap(at) < stations.front().first - 4.0 * gap(sLo)) at += 0.5 * gap(at);
+      if (ringAhead(poly, last, at)) {
         last = advance(stem, poly, last, at);
         sLo = at;
       }
@@ -925,12 +920,8 @@ class Builder {
         // last cross section's direction after two radii): the larch file's folds.
         double at = s;
         const double step = 0.25 * std::max(poly.radius(std::min(s, sEnd)), splitSlab.need);
-        auto ahead = [&](double x) {
-          const RingFrame turned = transportFrame(last.frame, poly.direction(x));
-          return bandAhead(last, ringCorners(poly, last.frame, x, splitSlab.need), poly.position(x), turned.T);
-        };
-        while (!ahead(at) && at < s + 8.0 * step) at += step;
-        const bool keep = !ahead(at);
+        while (!ringAhead(poly, last, at, splitSlab.need) && at < s + 8.0 * step) at += step;
+        const bool keep = !ringAhead(poly, last, at, splitSlab.need);
         if (keep) at = s;
         splitSlab.hi += at - splitSlab.lo;
         splitSlab.lo = at;
@@ -941,7 +932,7 @@ class Builder {
       }
       // A plain cross section the band to which would run backwards (the inside of a bend tighter than the radius)
       // is left out: the tube goes on to the next one (all trees' folds 1,584 -> 1,551, mesh-made pairs -0.7 %).
-      if (role == -2 && !bandAhead(last, ringCorners(poly, last.frame, s), poly.position(s), transportFrame(last.frame, poly.direction(s)).T)) continue;
+      if (role == -2 && !ringAhead(poly, last, s)) continue;
       const Ring next = makeRing(stem, poly, last, s, role >= -1 ? slabNeed(slabs, s) : 0.0);
       if (role >= 0) connectSlab(stem, last, next, slabs[static_cast<std::size_t>(role)]);
       else band(last, next);
@@ -975,6 +966,13 @@ class Builder {
       if (glm::dot(position(a.v[k]) - c, t) >= 0.0) return false;
     }
     return true;
+  }
+
+  // Whether the band from `last` to the cross section the stem would get at arc length s (at least minRadius)
+  // runs forwards.
+  bool ringAhead(const StemPolyline& poly, const Ring& last, double s, double minRadius = 0.0) const {
+    return bandAhead(last, ringCorners(poly, last.frame, s, minRadius), poly.position(s),
+                     transportFrame(last.frame, poly.direction(s)).T);
   }
 
   Ring advance(int stem, const StemPolyline& poly, const Ring& last, double s) {
