@@ -172,27 +172,36 @@ SelfIntersectionReport checkSelfIntersections(const QuadMesh& mesh) {
 SelfIntersectionReport checkSelfIntersections(const TreeMesh& tree, const Skeleton& skeleton) {
   const auto start = std::chrono::steady_clock::now();
   std::vector<QuadPairHit> hits = findIntersectingQuads(tree.mesh);
-  const std::vector<std::vector<Capsule>> capsules = stemCapsules(skeleton);
+  const std::vector<std::vector<Capsule>> necks = stemCapsules(skeleton, StemStart::ClearOfParent);
+  const std::vector<std::vector<Capsule>> wood = stemCapsules(skeleton, StemStart::OutOfParentWood);
+  // A child's neck overlaps its own parent by construction; against any other stem it is the child's wood.
+  auto capsulesFor = [&](int x, int y) -> const std::vector<std::vector<Capsule>>& {
+    const StemRelation r = relationOf(skeleton, x, y);
+    return r == StemRelation::ParentChild || r == StemRelation::CloneSource ? necks : wood;
+  };
   for (QuadPairHit& h : hits) {
     h.stemA = h.a < tree.quadStem.size() ? tree.quadStem[h.a] : -1;
     h.stemB = h.b < tree.quadStem.size() ? tree.quadStem[h.b] : -1;
     h.relation = relationOf(skeleton, h.stemA, h.stemB);
+    const bool candidate = h.contact != QuadContact::Edge && h.relation != StemRelation::Hub && h.relation != StemRelation::Same;
     if (h.relation != StemRelation::Hub) {
+      const auto& capsules = capsulesFor(h.stemA, h.stemB);
       h.reachA = stemReach(capsules[static_cast<std::size_t>(h.stemA)], h.point, builtRadius(tree.mesh, h.a));
       h.reachB = stemReach(capsules[static_cast<std::size_t>(h.stemB)], h.point, builtRadius(tree.mesh, h.b));
     }
-    const bool candidate = h.contact != QuadContact::Edge && h.relation != StemRelation::Hub && h.relation != StemRelation::Same;
-    bool wood = candidate && woodMeets(capsules, h.stemA, h.stemB, h.point, h.reachA, h.reachB);
+    bool meets = candidate && woodMeets(capsulesFor(h.stemA, h.stemB), h.stemA, h.stemB, h.point, h.reachA, h.reachB);
     // A child's collar lies on its parent's surface: a stem crossing that parent's wood crosses the collar too.
-    if (candidate && !wood) {
-      for (const auto& [x, y, reachX] : {std::tuple{h.stemA, h.stemB, h.reachA}, std::tuple{h.stemB, h.stemA, h.reachB}}) {
+    if (candidate && !meets) {
+      for (const auto& [x, fx, y] : {std::tuple{h.stemA, h.a, h.stemB}, std::tuple{h.stemB, h.b, h.stemA}}) {
         const int py = collarParent(skeleton, y);
         if (py < 0 || unrelatedTo(skeleton, x, py) == false) continue;
+        const auto& capsules = capsulesFor(x, py);
+        const double reachX = stemReach(capsules[static_cast<std::size_t>(x)], h.point, builtRadius(tree.mesh, fx));
         const double reachP = stemReach(capsules[static_cast<std::size_t>(py)], h.point);
-        if (woodMeets(capsules, x, py, h.point, reachX, reachP)) wood = true;
+        if (woodMeets(capsules, x, py, h.point, reachX, reachP)) meets = true;
       }
     }
-    h.origin = wood ? PairOrigin::Skeleton : PairOrigin::Mesh;
+    h.origin = meets ? PairOrigin::Skeleton : PairOrigin::Mesh;
   }
   SelfIntersectionReport r = summarise(std::move(hits), tree.mesh.quads.size(), true);
   r.milliseconds = millisecondsSince(start);

@@ -75,40 +75,80 @@ double distanceToOverlap(const std::vector<Capsule>& a, const std::vector<Capsul
   return best;
 }
 
-std::vector<std::vector<Capsule>> stemCapsules(const Skeleton& skeleton) {
-  std::vector<std::vector<Capsule>> capsules(skeleton.stems.size());
+namespace {
+
+// Drops the first `length` of a chain of capsules along its axis; what is left starts flat.
+void cutStart(std::vector<Capsule>& chain, double length) {
+  std::size_t drop = 0;
+  for (; drop < chain.size(); ++drop) {
+    Capsule& c = chain[drop];
+    const double len = glm::distance(c.a, c.b);
+    if (length < len) {
+      const double t = len > 0.0 ? length / len : 0.0;
+      c.a = c.a + (c.b - c.a) * t;
+      c.ra = c.ra + (c.rb - c.ra) * t;
+      c.flatStart = true;
+      break;
+    }
+    length -= len;
+  }
+  chain.erase(chain.begin(), chain.begin() + static_cast<std::ptrdiff_t>(drop));
+}
+
+// How far along a child's axis it runs before leaving its parent's wood (infinite if it never does): the
+// first capsule end outside, then bisection within that capsule.
+double lengthInside(const std::vector<Capsule>& child, const std::vector<Capsule>& parent) {
+  auto outside = [&](const Vec3& x) {
+    return std::none_of(parent.begin(), parent.end(), [&](const Capsule& c) { return capsuleReach(c, x) < 1.0; });
+  };
+  double before = 0.0;
+  for (const Capsule& c : child) {
+    const double len = glm::distance(c.a, c.b);
+    if (!outside(c.b)) {
+      before += len;
+      continue;
+    }
+    double lo = 0.0, hi = 1.0;
+    for (int k = 0; k < 16; ++k) {
+      const double mid = 0.5 * (lo + hi);
+      (outside(c.a + (c.b - c.a) * mid) ? hi : lo) = mid;
+    }
+    return before + hi * len;
+  }
+  return std::numeric_limits<double>::infinity();
+}
+
+}  // namespace
+
+std::vector<std::vector<Capsule>> stemCapsules(const Skeleton& skeleton, StemStart start) {
+  std::vector<std::vector<Capsule>> chains(skeleton.stems.size());
   const auto& nodes = skeleton.nodes;
   for (std::size_t s = 0; s < skeleton.stems.size(); ++s) {
     const SkeletonStem& stem = skeleton.stems[s];
-    std::vector<Capsule>& out = capsules[s];
     for (int k = 0; k < stem.nodeCount; ++k) {
       const SkeletonNode& n = nodes[static_cast<std::size_t>(stem.firstNode + k)];
       if (n.parent < 0) continue;
       const SkeletonNode& p = nodes[static_cast<std::size_t>(n.parent)];
-      out.push_back(Capsule{p.world.position, n.world.position, n.startRadius > 0.0 ? n.startRadius : p.radius, n.radius});
+      chains[s].push_back(Capsule{p.world.position, n.world.position, n.startRadius > 0.0 ? n.startRadius : p.radius, n.radius});
     }
+  }
+  std::vector<std::vector<Capsule>> capsules = chains;
+  for (std::size_t s = 0; s < skeleton.stems.size(); ++s) {
+    const SkeletonStem& stem = skeleton.stems[s];
+    std::vector<Capsule>& out = capsules[s];
     const bool growsFromAnother = stem.attachNode >= 0 && (stem.parentStem >= 0 || stem.cloneOf >= 0);
     if (!growsFromAnother || out.empty()) continue;
-    // Cut the stem where its axis leaves the wood of the stem it grows from.
     const SkeletonNode& attach = nodes[static_cast<std::size_t>(stem.attachNode)];
-    const Vec3 from = attach.world.direction(), to = glm::normalize(out.front().b - out.front().a);
-    const double sine = std::max(kMinSine, glm::length(glm::cross(from, to)));
     // A clone's source ends at the split: only the source's rounded end lies ahead of it, not a whole parent.
-    double cut = stem.cloneOf >= 0 ? attach.radius : kSurfaceReach * (attach.radius + out.front().ra) / sine;
-    std::size_t drop = 0;
-    for (; drop < out.size(); ++drop) {
-      Capsule& c = out[drop];
-      const double len = glm::distance(c.a, c.b);
-      if (cut < len) {
-        const double t = len > 0.0 ? cut / len : 0.0;
-        c.a = c.a + (c.b - c.a) * t;
-        c.ra = c.ra + (c.rb - c.ra) * t;
-        c.flatStart = true;
-        break;
-      }
-      cut -= len;
+    if (stem.cloneOf >= 0) {
+      cutStart(out, attach.radius);
+    } else if (start == StemStart::OutOfParentWood) {
+      cutStart(out, lengthInside(chains[s], chains[static_cast<std::size_t>(stem.parentStem)]));
+    } else {
+      const Vec3 from = attach.world.direction(), to = glm::normalize(out.front().b - out.front().a);
+      const double sine = std::max(kMinSine, glm::length(glm::cross(from, to)));
+      cutStart(out, kSurfaceReach * (attach.radius + out.front().ra) / sine);
     }
-    out.erase(out.begin(), out.begin() + static_cast<std::ptrdiff_t>(drop));
   }
   return capsules;
 }

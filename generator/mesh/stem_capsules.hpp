@@ -13,10 +13,17 @@ struct Capsule {
   bool flatStart = false;  // cut off square at a (a stem's start inside its parent), not rounded
 };
 
-// Per stem, its edges as capsules. A child or clone starts where its axis has cleared its parent's wood
-// (the parent's radius and its own, over the sine of the angle between them): inside the parent the two
-// overlap by construction, and what the mesh does there is the neck's doing.
-std::vector<std::vector<Capsule>> stemCapsules(const Skeleton& skeleton);
+// Where a child's (or clone's) capsules start along its axis.
+enum class StemStart {
+  // Its wood has cleared the parent's (the parent's radius and its own, over the sine of the angle between
+  // them): against its own parent, the two overlap by construction and the mesh there is the neck's doing.
+  ClearOfParent,
+  // Its axis has left the parent's wood: against any other stem, its wood from there on is its own.
+  OutOfParentWood,
+};
+
+// Per stem, its edges as capsules, a child's or clone's starting as `start` says.
+std::vector<std::vector<Capsule>> stemCapsules(const Skeleton& skeleton, StemStart start = StemStart::ClearOfParent);
 
 // Distance from x to the capsule's axis over its radius there (at least minRadius: the mesh keeps tips
 // thicker than the skeleton's, which tapers to 0): <= 1 inside; infinite before a flat start.
