@@ -16,6 +16,7 @@
 #include "growth/skeleton_checks.hpp"
 #include "growth/skeleton_json.hpp"
 #include "growth/weber_penn/weber_penn.hpp"
+#include "mesh/joint_checks.hpp"
 #include "mesh/mesh_checks.hpp"
 #include "mesh/osd_topology.hpp"
 #include "mesh/self_intersection.hpp"
@@ -346,6 +347,50 @@ TEST_CASE("a thin child leaves through a square inset in its parent's side, on t
   const auto ring = std::find_if(inset.rings.begin(), inset.rings.end(), [](const MeshRing& r) { return r.stem == 1; });
   REQUIRE(ring != inset.rings.end());
   CHECK(ring->inset);
+}
+
+TEST_CASE("twigs attached along a long neck leave through it where they attach, not from the first slab", "[graph][mesh]") {
+  // A trunk of radius 0.3 and a branch of radius 0.1 leaving it at 2 m, 15 degrees off it: its tube begins only
+  // where it has cleared the trunk, some 2 m along. Three twigs leave the branch outwards 1.2, 1.6 and 2 m along.
+  const Vec3 dir(std::sin(radians(15.0)), 0.0, std::cos(radians(15.0)));
+  BranchGraph g;
+  g.nodes = {at(0, 0, 0, -1, 0.3), at(0, 0, 2, 0, 0.3), at(0, 0, 6, 1, 0.25)};
+  int prev = 1;
+  for (int k = 1; k <= 10; ++k) {
+    const Vec3 p = Vec3(0, 0, 2) + dir * (0.4 * k);
+    g.nodes.push_back(at(p.x, p.y, p.z, prev, 0.1));
+    prev = static_cast<int>(g.nodes.size()) - 1;
+    if (k >= 3 && k <= 5) {
+      const Vec3 t = p + glm::normalize(Vec3(1.0, k == 4 ? 1.0 : -1.0, 0.6)) * 0.6;
+      g.nodes.push_back(at(t.x, t.y, t.z, prev, 0.02));
+    }
+  }
+  const Skeleton s = graphToSkeleton(g, unmerged());
+  REQUIRE(s.stems.size() == 5);
+  MeshOptions off;
+  off.neckPorts = false;
+  const TreeMesh piled = buildTreeMesh(s, off), ported = buildTreeMesh(s);
+  for (const TreeMesh* t : {&piled, &ported}) {
+    const MeshTopologyReport r = checkTopology(t->mesh);
+    CHECK(r.boundaryEdges == 0);
+    CHECK(r.nonManifoldEdges == 0);
+    CHECK(r.misorientedEdges == 0);
+    CHECK(r.eulerCharacteristic == 2);
+  }
+  auto offsets = [&](const TreeMesh& t) {
+    std::vector<double> out;
+    for (const ChildPlacement& c : childPlacements(s, t))
+      if (s.stems[static_cast<std::size_t>(c.stem)].level == 2) out.push_back(c.offset);
+    return out;
+  };
+  const std::vector<double> before = offsets(piled), after = offsets(ported);
+  REQUIRE(before.size() == 3);
+  REQUIRE(after.size() == 3);
+  for (std::size_t k = 0; k < 3; ++k) {
+    INFO("twig " << k << ": " << before[k] << " branch radii along the branch from its attachment, piled; " << after[k] << " through the neck");
+    CHECK(after[k] <= 1.5);  // issue 13's floor, which the first slab (9.1, 5.2 and 1.3 radii) misses
+  }
+  CHECK(checkSelfIntersections(ported, s).meshMade <= checkSelfIntersections(piled, s).meshMade);  // 0 and 4
 }
 
 TEST_CASE("a stem bending tighter than its radius leaves out the cross sections whose bands would run backwards", "[graph][mesh]") {

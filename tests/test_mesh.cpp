@@ -78,7 +78,8 @@ TEST_CASE("the mesher's own crossings stay at or below what was measured for eve
   // until their first band runs forwards, tips turning half-way where a full turn folds, and the cross section
   // after a collar moving on until its band runs forwards: the willow 2,000 -> 1,888, its folds 42 -> 0, the
   // poplar 114 -> 102, its folds 4 -> 0; then a child's neck counted as its wood against stems but its parent: the
-  // tupelo 126 -> 38, the willow 1,888 -> 1,170, the poplar 102 -> 59, the palm 108 -> 68) plus a tenth: a
+  // tupelo 126 -> 38, the willow 1,888 -> 1,170, the poplar 102 -> 59, the palm 108 -> 68; then children attached
+  // along a long neck leaving through it: the willow 1,170 -> 1,128, its necks 72 -> 50) plus a tenth: a
   // change to the mesher that makes more fails here. Three seeds, not one: any change to a joint moves one tree's count by a
   // fifth either way (the exact clearance of a child's skeleton: the poplar's seed 1 went 138 -> 161, seed 2
   // 115 -> 103), the sum by a few percent.
@@ -88,7 +89,7 @@ TEST_CASE("the mesher's own crossings stay at or below what was measured for eve
   };
   for (const Measured& m : {Measured{"black-tupelo", 38, 1, 0}, Measured{"ca-black-oak", 220, 0, 113},
                             Measured{"lombardy-poplar", 59, 0, 8}, Measured{"palm", 68, 0, 0},
-                            Measured{"quaking-aspen", 38, 0, 25}, Measured{"weeping-willow", 1170, 0, 72}}) {
+                            Measured{"quaking-aspen", 38, 0, 25}, Measured{"weeping-willow", 1128, 0, 50}}) {
     INFO(m.preset);
     std::size_t meshMade = 0, folds = 0, necks = 0, skeletonMade = 0;
     for (std::uint64_t seed : {1u, 2u, 3u}) {

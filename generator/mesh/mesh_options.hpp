@@ -18,6 +18,9 @@ struct MeshOptions {
   // A thin child leaves through a square inset in its parent's side, as wide as a cross section of this many
   // child radii (0: through the whole side, as wide as the parent).
   double insetCollar = 1.0;
+  // Children attached along a long neck (before their parent's tube begins) leave through that neck where they
+  // attach; off: they crowd the parent's first slab, however far along that is.
+  bool neckPorts = true;
 };
 
 }  // namespace arbor
