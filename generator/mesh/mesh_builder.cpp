@@ -732,7 +732,8 @@ class Builder {
   // band runs back to its skeleton and cuts other branches). Attachments that nearly coincide share a slab
   // whatever their number, through sub-boxes. Neighbouring slabs shrink to meet halfway: one-child slabs
   // share the cross section there, busier ones keep a thin band between them, so no corner is in more than
-  // two ports. Children attached before the tube begins (inside the stem's own parent) join the first slab.
+  // two ports. Children attached before the tube begins (inside the stem's own parent) join the first slab, but for
+  // those `onNeck` accepts: their nodes go to `neck` instead (neckPorts).
   std::vector<Slab> layOutSlabs(int stem, const StemPolyline& poly, double from, double to, std::vector<int>* neck = nullptr,
                                 const std::function<bool(int)>& onNeck = {}) const {
     const SkeletonStem& st = sk_.stems[static_cast<std::size_t>(stem)];
@@ -1148,16 +1149,16 @@ class Builder {
   // attachment lies along that band: the band's surface stays as it was, and no child is moved along its parent.
   void neckPorts(const NeckChildren& neck, const Ring& a, const Ring& b) {
     const Vec3 axis = b.center - a.center;
-    const double len = glm::length(axis);
+    const double len = std::max(glm::length(axis), 1e-12 * sk_.treeScale);
     struct Group {
-      double first = 0, last = 0, h = 0, hMin = 0, lo = 0, hi = 0;
+      double first = 0, last = 0, h = 0, lo = 0, hi = 0;  // along the band from a, in metres
       int node = -1;
       std::vector<int> children;
     };
     std::vector<std::pair<double, int>> along;
     for (int node : neck.nodes) {
       const Vec3 p = sk_.nodes[static_cast<std::size_t>(node)].world.position;
-      along.emplace_back(len > 0.0 ? glm::dot(p - a.center, axis) / len : 0.0, node);
+      along.emplace_back(glm::dot(p - a.center, axis) / len, node);
     }
     std::stable_sort(along.begin(), along.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
     std::vector<Group> groups;
@@ -1166,16 +1167,18 @@ class Builder {
       const double ra = std::max(sk_.nodes[static_cast<std::size_t>(node)].radius, 1e-6 * sk_.treeScale);
       double rc = 0.0;
       for (int c : children) rc = std::max(rc, sk_.stems[static_cast<std::size_t>(c)].startRadius);
+      // A slab's half height as in layOutSlabs, but at most a fifth of the band; centred at least 1.5 of it in.
       const double h = std::min(std::clamp(1.2 * rc, 0.3 * ra, ra), 0.2 * len);
       const double at = std::clamp(x, 1.5 * h, len - 1.5 * h);
-      if (!groups.empty() && at - groups.back().first < std::max(2.0 * 0.15 * ra, groups.back().h + h)) {
+      // Attachments whose slabs would overlap share one (through sub-boxes where they want the same side).
+      if (!groups.empty() && at - groups.back().first < std::max(0.3 * ra, groups.back().h + h)) {
         Group& g = groups.back();
         g.children.insert(g.children.end(), children.begin(), children.end());
         g.last = std::max(g.last, at);
         g.h = std::max(g.h, h);
         continue;
       }
-      groups.push_back(Group{at, at, h, 0.15 * ra, 0, 0, node, children});
+      groups.push_back(Group{at, at, h, 0, 0, node, children});
     }
     for (Group& g : groups) {
       g.lo = std::max(g.first - g.h, 0.1 * g.h);
