@@ -2,6 +2,7 @@
 // edited through the generic table, and Weber-Penn behind it growing exactly what it grew before.
 #include <catch2/catch.hpp>
 #include <cstdint>
+#include <cstring>
 #include <nlohmann/json.hpp>
 
 #include "common/atomic_file.hpp"
@@ -23,6 +24,14 @@ std::uint64_t fnv1a(const std::string& text) {
     h *= 0x100000001b3ull;
   }
   return h;
+}
+
+// The skeleton file as written before stems carried their stub flag (so hashes recorded then still apply).
+std::string withoutStubFlags(std::string text) {
+  for (const char* field : {", \"stub\": false", ", \"stub\": true"}) {
+    for (std::size_t at = text.find(field); at != std::string::npos; at = text.find(field, at)) text.erase(at, std::strlen(field));
+  }
+  return text;
 }
 
 std::string presetText(const std::string& name) { return readFile(std::string(ARBOR_ASSET_DIR) + "/presets/" + name + ".json"); }
@@ -50,7 +59,7 @@ TEST_CASE("every preset grows the skeleton it grew before growth models existed 
     CHECK(std::string(model.model()) == "weber-penn");
     GrowthOptions growth;
     growth.seed = 1;
-    CHECK(fnv1a(writeSkeletonJson(model.grow(growth))) == hash);
+    CHECK(fnv1a(withoutStubFlags(writeSkeletonJson(model.grow(growth)))) == hash);
   }
 }
 

@@ -82,6 +82,7 @@ void writeSkeletonJson(const Skeleton& s, std::ostream& out) {
     w.field("branchRatio", st.branchRatio);
     w.field("secondaryAngle", degrees(st.secondaryAngle));
     w.field("primaryDeflection", degrees(st.primaryDeflection));
+    w.field("stub", st.stub);
     w.endObject();
   }
   w.endArray();
@@ -236,7 +237,7 @@ Skeleton readSkeletonJson(const std::string& text, const std::string& file) {
     const std::string at = "stems[" + std::to_string(i) + "].";
     const json& st = object(stems[i], file, at.substr(0, at.size() - 1));
     onlyKeys(st, {"id", "key", "level", "parent", "cloneOf", "attachNode", "firstNode", "nodeCount", "length", "offsetOnParent", "startRadius",
-                  "branchRatio", "secondaryAngle", "primaryDeflection"},
+                  "branchRatio", "secondaryAngle", "primaryDeflection", "stub"},
              file, at);
     const auto id = static_cast<std::int64_t>(i);
     whole(st, "id", at, id, id, std::to_string(i) + " (ids are indices into stems)");
@@ -270,6 +271,11 @@ Skeleton readSkeletonJson(const std::string& text, const std::string& file) {
     stem.branchRatio = num(st, "branchRatio", at, 0.0, kBig, "a number >= 0");
     stem.secondaryAngle = radiansExact(num(st, "secondaryAngle", at, -360.0, 360.0, "-360 to 360 degrees"));
     stem.primaryDeflection = radiansExact(num(st, "primaryDeflection", at, -360.0, 360.0, "-360 to 360 degrees"));
+    // Optional (files written before it had none): without it a stub would be meshed as a tube, not drawn as a card.
+    if (const auto it = st.find("stub"); it != st.end()) {
+      if (!it->is_boolean()) throw InputError(file, at + "stub", typeName(*it) + " is not allowed; give true or false");
+      stem.stub = it->get<bool>();
+    }
     s.stems.push_back(std::move(stem));
   }
 
