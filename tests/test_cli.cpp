@@ -142,6 +142,13 @@ TEST_CASE("mesh takes a branch graph or a skeleton file, a skeleton meshes exact
   CHECK(badStub.exitCode == 2);
   CHECK_THAT(badStub.output, Catch::Contains("bad-stub.json") && Catch::Contains("stems[1].stub") && Catch::Contains("true or false"));
   CHECK_FALSE(fs::exists(arbor::test::tempPath("s.obj")));
+  // A stub's children are stubs too: a tube there would have no parent surface to leave from.
+  written["stems"][1]["stub"] = false;
+  written["stems"][0]["stub"] = true;
+  const Result stubParent = run("mesh " + writeTemp("stub-parent.json", written.dump()) + " --out " + arbor::test::tempPath("s.obj"));
+  CHECK(stubParent.exitCode == 2);
+  CHECK_THAT(stubParent.output, Catch::Contains("stub-parent.json") && Catch::Contains("stems[1].stub") && Catch::Contains("grows from stem 0"));
+  CHECK_FALSE(fs::exists(arbor::test::tempPath("s.obj")));
   const Result species = run("species " + skeleton);
   CHECK(species.exitCode == 2);
   CHECK_THAT(species.output, Catch::Contains("not a model file"));

@@ -278,6 +278,16 @@ Skeleton readSkeletonJson(const std::string& text, const std::string& file) {
     }
     s.stems.push_back(std::move(stem));
   }
+  // What grows from a stub is drawn with it as cards; a tube there would have no parent surface to leave from.
+  for (std::size_t i = 0; i < s.stems.size(); ++i) {
+    const SkeletonStem& st = s.stems[i];
+    for (const std::int32_t from : {st.parentStem, st.cloneOf}) {
+      if (from >= 0 && s.stems[static_cast<std::size_t>(from)].stub && !st.stub) {
+        throw InputError(file, "stems[" + std::to_string(i) + "].stub",
+                         "false, but it grows from stem " + std::to_string(from) + ", a stub; a stub's children and clones are stubs too (give true)");
+      }
+    }
+  }
 
   s.leaves.reserve(leaves.size());
   for (std::size_t i = 0; i < leaves.size(); ++i) {
