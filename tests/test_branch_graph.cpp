@@ -25,6 +25,7 @@
 #include "patches/acc_accuracy.hpp"
 #include "patches/patch_set.hpp"
 #include "acc_checks.hpp"
+#include "manifold_checks.hpp"
 #include "test_support.hpp"
 
 using namespace arbor;
@@ -56,23 +57,8 @@ OneStem meshOneStem(const BranchGraph& g) {
   OneStem one{graphToSkeleton(g, unmerged()), {}};
   REQUIRE(one.skeleton.stems.size() == 1);
   one.tree = buildTreeMesh(one.skeleton);
-  const MeshTopologyReport r = checkTopology(one.tree.mesh);
-  CHECK(r.boundaryEdges == 0);
-  CHECK(r.eulerCharacteristic == 2);
+  test::checkClosedManifold(one.tree.mesh);
   return one;
-}
-
-// The band from ring a to ring b runs forwards: b's corners ahead of a (its direction from its corners,
-// counter-clockwise about it) and a's behind b.
-void checkBandForwards(const TreeMesh& tree, const MeshRing& a, const MeshRing& b) {
-  auto corner = [&](const MeshRing& ring, std::size_t k) { return Vec3(tree.mesh.positions[ring.vertices[k]]); };
-  auto direction = [&](const MeshRing& ring) {
-    return glm::normalize(glm::cross(corner(ring, 0) - corner(ring, 2), corner(ring, 1) - corner(ring, 3)));
-  };
-  for (std::size_t k = 0; k < 4; ++k) {
-    CHECK(glm::dot(corner(b, k) - a.center, direction(a)) > 0.0);
-    CHECK(glm::dot(corner(a, k) - b.center, direction(b)) < 0.0);
-  }
 }
 
 std::vector<int> childCounts(const BranchGraph& g) {
@@ -287,14 +273,7 @@ TEST_CASE("a thin child leaves through a square inset in its parent's side, on t
   MeshOptions whole;
   whole.insetCollar = 0.0;
   const TreeMesh plain = buildTreeMesh(s, whole), inset = buildTreeMesh(s);
-  for (const TreeMesh* t : {&plain, &inset}) {
-    const MeshTopologyReport r = checkTopology(t->mesh);
-    CHECK(r.boundaryEdges == 0);
-    CHECK(r.nonManifoldEdges == 0);
-    CHECK(r.misorientedEdges == 0);
-    CHECK(r.degenerateFaces == 0);
-    CHECK(r.eulerCharacteristic == 2);
-  }
+  for (const TreeMesh* t : {&plain, &inset}) CHECK(test::checkClosedManifold(t->mesh).degenerateFaces == 0);
   // Four quads and four vertices of valence 4 more; every other vertex keeps its valence.
   auto histogram = [](const QuadMesh& m) {
     std::vector<int> valence(m.positions.size(), 0);
@@ -370,13 +349,7 @@ TEST_CASE("twigs attached along a long neck leave through it where they attach, 
   MeshOptions off;
   off.neckPorts = false;
   const TreeMesh piled = buildTreeMesh(s, off), ported = buildTreeMesh(s);
-  for (const TreeMesh* t : {&piled, &ported}) {
-    const MeshTopologyReport r = checkTopology(t->mesh);
-    CHECK(r.boundaryEdges == 0);
-    CHECK(r.nonManifoldEdges == 0);
-    CHECK(r.misorientedEdges == 0);
-    CHECK(r.eulerCharacteristic == 2);
-  }
+  for (const TreeMesh* t : {&piled, &ported}) test::checkClosedManifold(t->mesh);
   auto offsets = [&](const TreeMesh& t) {
     std::vector<double> out;
     for (const ChildPlacement& c : childPlacements(s, t))
@@ -401,7 +374,7 @@ TEST_CASE("a stem bending tighter than its radius leaves out the cross sections 
   const OneStem one = meshOneStem(g);
   const TreeMesh& tree = one.tree;
   REQUIRE(tree.rings.size() >= 3);
-  for (std::size_t i = 1; i < tree.rings.size(); ++i) checkBandForwards(tree, tree.rings[i - 1], tree.rings[i]);
+  for (std::size_t i = 1; i < tree.rings.size(); ++i) CHECK(test::bandRunsForwards(tree, tree.rings[i - 1], tree.rings[i]));
   CHECK(checkSelfIntersections(tree, one.skeleton).folds == 0);
 }
 
@@ -413,7 +386,7 @@ TEST_CASE("a tip bending away within a radius of the cross section before it tur
   const TreeMesh& tree = one.tree;
   REQUIRE(tree.rings.size() >= 2);
   // The band from the cross section before the tip to the tip runs forwards, so nothing folds.
-  checkBandForwards(tree, tree.rings[tree.rings.size() - 2], tree.rings.back());
+  CHECK(test::bandRunsForwards(tree, tree.rings[tree.rings.size() - 2], tree.rings.back()));
   CHECK(checkSelfIntersections(tree, one.skeleton).folds == 0);
 }
 

@@ -366,16 +366,6 @@ TEST_CASE("a short stem's split slab moves on until the band to it runs forwards
   if (files.empty()) return;  // arbaroSpeciesFiles said why
   const Skeleton s = grow(loadSpeciesFile(std::string(ARBOR_SPECIES_DIR) + "/european_larch.xml"), 2);
   const TreeMesh tree = buildTreeMesh(s);
-  auto corner = [&](const MeshRing& ring, std::size_t k) { return Vec3(tree.mesh.positions[ring.vertices[k]]); };
-  auto direction = [&](const MeshRing& ring) {
-    return glm::normalize(glm::cross(corner(ring, 0) - corner(ring, 2), corner(ring, 1) - corner(ring, 3)));
-  };
-  auto forwards = [&](const MeshRing& a, const MeshRing& b) {
-    for (std::size_t k = 0; k < 4; ++k) {
-      if (glm::dot(corner(b, k) - a.center, direction(a)) <= 0.0 || glm::dot(corner(a, k) - b.center, direction(b)) >= 0.0) return false;
-    }
-    return true;
-  };
   // Per stem, its last cross section on the skeleton and the one before it; a split stem's is its split slab's.
   std::vector<int> lastOn(s.stems.size(), -1), before(s.stems.size(), -1);
   for (std::size_t r = 0; r < tree.rings.size(); ++r) {
@@ -390,7 +380,7 @@ TEST_CASE("a short stem's split slab moves on until the band to it runs forwards
     if (st.nodeCount == 0 || lastOn[i] < 0) continue;
     if (s.nodes[static_cast<std::size_t>(st.firstNode + st.nodeCount - 1)].kind != NodeKind::Split) continue;
     ++splits;
-    backwards += forwards(tree.rings[static_cast<std::size_t>(before[i])], tree.rings[static_cast<std::size_t>(lastOn[i])]) ? 0 : 1;
+    backwards += test::bandRunsForwards(tree, tree.rings[static_cast<std::size_t>(before[i])], tree.rings[static_cast<std::size_t>(lastOn[i])]) ? 0 : 1;
   }
   INFO(backwards << " of " << splits << " split stems' last bands run backwards");
   CHECK(splits > 1000);
