@@ -723,6 +723,17 @@ class Builder {
     bool moved = false;  // its children attach before the tube begins (or past its end) and were moved
   };
 
+  // The widest start radius among these stems: what the slab they leave from must hold.
+  double widestStart(const std::vector<int>& stems) const {
+    double rc = 0.0;
+    for (int c : stems) rc = std::max(rc, sk_.stems[static_cast<std::size_t>(c)].startRadius);
+    return rc;
+  }
+
+  // Half a slab's height for children as wide as rc on a parent of radius ra: 1.2 child radii, within 0.3 to 1
+  // parent radius.
+  static double slabHalfHeight(double rc, double ra) { return std::clamp(1.2 * rc, 0.3 * ra, ra); }
+
   // Distance kept between plain cross sections: half the local radius (never zero on hair-thin twigs).
   double gapAt(const StemPolyline& poly, double s) const {
     return std::max(0.5 * poly.radius(std::min(s, poly.length())), 1e-6 * sk_.treeScale);
@@ -745,10 +756,8 @@ class Builder {
       const auto& children = stemsAt_[static_cast<std::size_t>(node)];
       if (children.empty()) continue;
       const double ra = std::max(poly.radius(poly.arcLength(i) - 1e-9), 1e-6 * sk_.treeScale);
-      double rc = 0.0;
-      for (int c : children) rc = std::max(rc, sk_.stems[static_cast<std::size_t>(c)].startRadius);
-      // Half a slab's height: 1.2 child radii, within 0.3 to 1 parent radius; at the very least, hMin.
-      const double h = std::clamp(1.2 * rc, 0.3 * ra, ra);
+      const double rc = widestStart(children);
+      const double h = slabHalfHeight(rc, ra);
       const double hMin = 0.15 * ra;
       if (neck && poly.arcLength(i) < from + hMin && (!onNeck || onNeck(node))) {
         neck->push_back(node);
@@ -820,8 +829,7 @@ class Builder {
     double slabsEnd = sEnd;
     if (split) {
       const auto& clones = stemsAt_[static_cast<std::size_t>(lastNode)];
-      double rc = 0.0;
-      for (int c : clones) rc = std::max(rc, sk_.stems[static_cast<std::size_t>(c)].startRadius);
+      const double rc = widestStart(clones);
       const double ra = poly.radius(sEnd);
       splitSlab.h = std::clamp(1.2 * rc, 0.5 * ra, ra);
       splitSlab.node = lastNode;
@@ -1167,10 +1175,8 @@ class Builder {
     for (const auto& [x, node] : along) {
       const auto& children = stemsAt_[static_cast<std::size_t>(node)];
       const double ra = std::max(sk_.nodes[static_cast<std::size_t>(node)].radius, 1e-6 * sk_.treeScale);
-      double rc = 0.0;
-      for (int c : children) rc = std::max(rc, sk_.stems[static_cast<std::size_t>(c)].startRadius);
-      // A slab's half height as in layOutSlabs, but at most a fifth of the band; centred at least 1.5 of it in.
-      const double h = std::min(std::clamp(1.2 * rc, 0.3 * ra, ra), 0.2 * len);
+      // A slab's half height, but at most a fifth of the band; centred at least 1.5 of it in.
+      const double h = std::min(slabHalfHeight(widestStart(children), ra), 0.2 * len);
       const double at = std::clamp(x, 1.5 * h, len - 1.5 * h);
       // Attachments whose slabs would overlap share one (through sub-boxes where they want the same side).
       if (!groups.empty() && at - groups.back().first < std::max(0.3 * ra, groups.back().h + h)) {
@@ -1277,8 +1283,7 @@ class Builder {
   // Several trunks meet in a root node: a capped hub whose top and sides they leave from.
   void buildRoot(const std::vector<int>& trunks) {
     if (trunks.empty()) return;
-    double rho = 0.0;
-    for (int t : trunks) rho = std::max(rho, sk_.stems[static_cast<std::size_t>(t)].startRadius);
+    const double rho = widestStart(trunks);
     const Vec3 origin = sk_.nodes[0].world.position;
     const RingFrame frame = frameFromHint(kUp, Vec3(1, 0, 0));
     const Ring base = emitRing(trunks[0], origin, frame, 1.5 * rho, 0.0);
