@@ -280,6 +280,9 @@ class Grower {
       proto.profile = makeStemProfile(lp.taper, length, radius, p_.flare);
       proto.naturalStart = radius;
       proto.startRadius = radius * proto.profile.at(0.0);
+      // One of several trunks thinner than the mesher's floor (LengthV can shrink it to 1e-6 m) is a stub, drawn
+      // as a card with its children: its hub port was a point, and the tube's corners came out not a number.
+      proto.stub = trunks > 1 && proto.startRadius < 1e-5 * tree_.treeScale;
       commit(growGeometry(key, 0, base, length, 0), proto);
     }
   }
