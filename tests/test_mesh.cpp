@@ -16,6 +16,7 @@
 #include "patches/limit_reference.hpp"
 #include "growth/weber_penn/species_io.hpp"
 #include "test_support.hpp"
+#include "tree/build_tree.hpp"
 
 using namespace arbor;
 using Catch::Matchers::WithinAbs;
@@ -241,6 +242,22 @@ TEST_CASE("fake-branch segments are exactly the skeleton edges the mesh leaves o
   std::size_t stubNodes = 0;
   for (const SkeletonNode& node : s.nodes) stubNodes += node.parent >= 0 && s.stems[static_cast<std::size_t>(node.stem)].stub ? 1 : 0;
   CHECK(impostorSegments(s, 3).size() == stubNodes);
+}
+
+TEST_CASE("a tree meshed at every level still draws its stubs as fake branches", "[mesh][impostors]") {
+  // The oak preset grows stubs (children too short or thin for a tube); with every level meshed, buildTree had
+  // left out every fake-branch segment, so `arbor render` and the viewer drew none of them.
+  const Skeleton s = grow(test::loadPreset("ca-black-oak"), 1);
+  std::size_t stubNodes = 0;
+  for (const SkeletonNode& node : s.nodes) stubNodes += node.parent >= 0 && node.stem >= 0 && s.stems[static_cast<std::size_t>(node.stem)].stub ? 1 : 0;
+  REQUIRE(stubNodes > 0);
+  BuildOptions options;
+  options.patches = false;
+  const TreeGeometry all = buildTree(s, options);
+  CHECK(all.impostors.size() == stubNodes);
+  CHECK(all.sketch.empty());
+  options.mesh.levels = s.levels;  // the same, asked for by number
+  CHECK(buildTree(s, options).impostors.size() == stubNodes);
 }
 
 TEST_CASE("a distance limit adds cross sections until none are farther apart", "[mesh]") {

@@ -8,10 +8,9 @@ TreeGeometry buildTree(const Skeleton& skeleton, const BuildOptions& options) {
   MeshOptions mesh = options.mesh;
   mesh.levels = meshLevels < skeleton.levels ? meshLevels : 0;
   g.mesh = buildTreeMesh(skeleton, mesh);
-  if (mesh.levels > 0) {
-    g.impostors = impostorSegments(skeleton, meshLevels);
-    g.sketch = sketchSegments(skeleton, meshLevels, skeleton.levels - 1);
-  }
+  // Stubs are fake branches at every level, also when every level is meshed (they had gone undrawn then).
+  g.impostors = impostorSegments(skeleton, mesh.levels > 0 ? meshLevels : skeleton.levels);
+  if (mesh.levels > 0) g.sketch = sketchSegments(skeleton, meshLevels, skeleton.levels - 1);
   if (options.patches) g.patches = buildPatches(g.mesh.mesh);
   if (options.wind) g.wind = treeWind(skeleton, g.mesh, g.impostors, g.sketch);
   return g;

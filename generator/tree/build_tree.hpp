@@ -22,7 +22,7 @@ struct BuildOptions {
 struct TreeGeometry {
   TreeMesh mesh;
   PatchSet patches;
-  std::vector<ImpostorSegment> impostors;  // the levels past the mesh, one segment per skeleton edge
+  std::vector<ImpostorSegment> impostors;  // the levels past the mesh and every stub, one segment per skeleton edge
   std::vector<ImpostorSegment> sketch;     // a coarser sketch of them, without the deepest, for trees far away
   TreeWind wind;                           // with BuildOptions::wind
 };
