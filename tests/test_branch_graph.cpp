@@ -27,6 +27,8 @@
 #include "acc_checks.hpp"
 #include "manifold_checks.hpp"
 #include "test_support.hpp"
+#include "export/tree_asset.hpp"
+#include "tree/build_tree.hpp"
 
 using namespace arbor;
 
@@ -348,6 +350,7 @@ TEST_CASE("twigs attached along a long neck leave through it where they attach, 
   REQUIRE(s.stems.size() == 5);
   MeshOptions off;
   off.neckPorts = false;
+  off.fakeDisplaced = false;  // piled as before neck ports, every twig meshed however far from its attachment
   const TreeMesh piled = buildTreeMesh(s, off), ported = buildTreeMesh(s);
   for (const TreeMesh* t : {&piled, &ported}) test::checkClosedManifold(t->mesh);
   auto offsets = [&](const TreeMesh& t) {
@@ -364,6 +367,64 @@ TEST_CASE("twigs attached along a long neck leave through it where they attach, 
     CHECK(after[k] <= 1.5);  // issue 13's floor, which the first slab (9.1, 5.2 and 1.3 radii) misses
   }
   CHECK(checkSelfIntersections(ported, s).meshMade <= checkSelfIntersections(piled, s).meshMade);  // 0 and 4
+}
+
+TEST_CASE("a twig its parent could join only past half its length from where it attaches is a fake branch", "[graph][mesh]") {
+  // The branch of the test above, its twigs piled on its first slab (no neck ports): 9.1, 5.2 and 1.3 branch
+  // radii (0.1 m) from their attachments, each twig 0.6 m long. The first two would be tubes from a slab more
+  // than half their length along (0.91 and 0.52 m): drawn as fake branches on their skeletons; the third is meshed.
+  const Vec3 dir(std::sin(radians(15.0)), 0.0, std::cos(radians(15.0)));
+  BranchGraph g;
+  g.nodes = {at(0, 0, 0, -1, 0.3), at(0, 0, 2, 0, 0.3), at(0, 0, 6, 1, 0.25)};
+  int prev = 1;
+  std::vector<int> twigNodes;
+  for (int k = 1; k <= 10; ++k) {
+    const Vec3 p = Vec3(0, 0, 2) + dir * (0.4 * k);
+    g.nodes.push_back(at(p.x, p.y, p.z, prev, 0.1));
+    prev = static_cast<int>(g.nodes.size()) - 1;
+    if (k >= 3 && k <= 5) {
+      const Vec3 t = p + glm::normalize(Vec3(1.0, k == 4 ? 1.0 : -1.0, 0.6)) * 0.6;
+      g.nodes.push_back(at(t.x, t.y, t.z, prev, 0.02));
+    }
+  }
+  const Skeleton s = graphToSkeleton(g, unmerged());
+  REQUIRE(s.stems.size() == 5);
+  MeshOptions piled;
+  piled.neckPorts = false;
+  MeshOptions all = piled;
+  all.fakeDisplaced = false;
+  const TreeMesh faked = buildTreeMesh(s, piled), meshed = buildTreeMesh(s, all);
+  test::checkClosedManifold(faked.mesh);
+  CHECK(meshed.fakedStems.empty());
+  REQUIRE(faked.fakedStems.size() == 2);
+  for (const int c : faked.fakedStems) {
+    const SkeletonStem& st = s.stems[static_cast<std::size_t>(c)];
+    CHECK(st.level == 2);
+    CHECK(std::none_of(faked.rings.begin(), faked.rings.end(), [&](const MeshRing& r) { return r.stem == c; }));
+    // Of the three twigs, the two nearest the branch's base (the farthest from the first slab).
+    CHECK(s.nodes[static_cast<std::size_t>(st.attachNode)].world.position.z < 2.0 + 1.7 * dir.z);
+  }
+  // Each left-out twig is drawn instead: one fake-branch segment per skeleton edge, from its attachment.
+  BuildOptions build;
+  build.mesh = piled;
+  build.patches = false;
+  const TreeGeometry geometry = buildTree(s, build);
+  std::size_t edges = 0;
+  for (const int c : faked.fakedStems) edges += static_cast<std::size_t>(s.stems[static_cast<std::size_t>(c)].nodeCount);
+  CHECK(geometry.impostors.size() == edges);
+  for (const ImpostorSegment& seg : geometry.impostors) {
+    CHECK(std::find(faked.fakedStems.begin(), faked.fakedStems.end(), s.nodes[static_cast<std::size_t>(seg.toNode)].stem) != faked.fakedStems.end());
+  }
+  // Exports card them as they card stubs: two crossed cards per segment.
+  TreeAssetOptions assetOptions;
+  assetOptions.mesh = piled;
+  assetOptions.leaves = false;
+  const TreeAsset asset = makeTreeAsset(s, "twigs", assetOptions);
+  REQUIRE(asset.lods.size() == 1);
+  CHECK(asset.lods[0].fakedStems == faked.fakedStems);
+  CHECK(asset.lods[0].branchCards.quads.size() == 2 * edges);
+  // And the mesh makes fewer crossings than with those twigs running back from the slab to their skeletons.
+  CHECK(checkSelfIntersections(faked, s).meshMade <= checkSelfIntersections(meshed, s).meshMade);
 }
 
 TEST_CASE("a stem bending tighter than its radius leaves out the cross sections whose bands would run backwards", "[graph][mesh]") {

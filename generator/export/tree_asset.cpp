@@ -41,6 +41,15 @@ void reserveCards(CardMesh& cards, std::size_t count) {
   cards.quads.reserve(count);
 }
 
+void appendCards(CardMesh& to, const CardMesh& more) {
+  const auto first = static_cast<std::uint32_t>(to.positions.size());
+  to.positions.insert(to.positions.end(), more.positions.begin(), more.positions.end());
+  to.normals.insert(to.normals.end(), more.normals.begin(), more.normals.end());
+  to.tangents.insert(to.tangents.end(), more.tangents.begin(), more.tangents.end());
+  to.texcoords.insert(to.texcoords.end(), more.texcoords.begin(), more.texcoords.end());
+  for (const auto& q : more.quads) to.quads.push_back({q[0] + first, q[1] + first, q[2] + first, q[3] + first});
+}
+
 }  // namespace
 
 Card leafCard(const Leaf& leaf) {
@@ -228,6 +237,7 @@ TreeAsset makeTreeAsset(const Skeleton& skeleton, const std::string& name, const
     AssetLod level;
     level.name = name + "_lod" + std::to_string(lod);
     level.meshedLevels = lodLevels[lod];
+    level.fakedStems = coarse->fakedStems;
     // Unsubdivided, the bark is the coarse mesh itself, shared (a copy was a sixth of a large export's time).
     level.bark = options.subdivide > 0 ? std::make_shared<const QuadMesh>(subdivide(coarse->mesh, options.subdivide, options.mesh.maxQuads))
                                        : std::shared_ptr<const QuadMesh>(coarse, &coarse->mesh);
@@ -239,6 +249,11 @@ TreeAsset makeTreeAsset(const Skeleton& skeleton, const std::string& name, const
   // Stubs are never meshed, so every level of detail has their cards too (wheat's grains).
   for (std::size_t lod = 0; lod < asset.lods.size(); ++lod) {
     AssetLod& level = asset.lods[lod];
+    if (options.branchCards && !level.fakedStems.empty()) {  // known once meshed: their cards join the rest
+      const std::vector<ImpostorSegment> faked = stemSegments(skeleton, level.fakedStems);
+      lodCards[lod].segments.insert(lodCards[lod].segments.end(), faked.begin(), faked.end());
+      appendCards(lodCards[lod].cards, branchCards(faked));
+    }
     level.branchCards = std::move(lodCards[lod].cards);
     if (options.wind.on()) {
       if (progress) progress("level of detail " + std::to_string(lod) + ": " + std::to_string(options.windFrames) + " wind poses");

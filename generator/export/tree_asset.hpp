@@ -68,6 +68,7 @@ struct AssetLod {
   std::string name;        // "tupelo_lod0"
   int meshedLevels = 0;    // stem levels in the mesh (the deeper ones are cards)
   std::shared_ptr<const QuadMesh> bark;  // shared with the caller's mesh where it is the coarse one (no copy)
+  std::vector<int> fakedStems;           // children that mesh left out (TreeMesh::fakedStems): cards too
   CardMesh branchCards;
   // With wind: per keyframe, each vertex's offset from its rest position (bark, then branch cards).
   std::vector<std::vector<glm::vec3>> barkPoses, branchCardPoses;

@@ -6,6 +6,19 @@
 
 namespace arbor {
 
+namespace {
+
+// The segment from node i's parent node to node i, its bark's v running on from `startV`.
+ImpostorSegment segmentTo(const Skeleton& skeleton, std::size_t i, double startV) {
+  const SkeletonNode& node = skeleton.nodes[i];
+  const SkeletonNode& parent = skeleton.nodes[static_cast<std::size_t>(node.parent)];
+  const double length = glm::distance(parent.world.position, node.world.position);
+  const double v = startV + barkTextureAdvance(length, 0.5 * (node.startRadius + node.radius));
+  return {parent.world.position, node.world.position, node.startRadius, node.radius, startV, v, node.level, node.parent, static_cast<std::int32_t>(i)};
+}
+
+}  // namespace
+
 std::vector<ImpostorSegment> impostorSegments(const Skeleton& skeleton, int fromLevel) {
   std::vector<ImpostorSegment> segments;
   // Texture v at each node, so that a stem's bark runs on from segment to segment (and clones continue
@@ -20,11 +33,22 @@ std::vector<ImpostorSegment> impostorSegments(const Skeleton& skeleton, int from
     if (node.parent < 0 || !faked(node)) continue;
     const auto parentIndex = static_cast<std::size_t>(node.parent);
     const SkeletonNode& parent = skeleton.nodes[parentIndex];
-    const double start = faked(parent) && parentIndex < i ? v[parentIndex] : 0.0;
-    const double length = glm::distance(parent.world.position, node.world.position);
-    v[i] = start + barkTextureAdvance(length, 0.5 * (node.startRadius + node.radius));
-    segments.push_back({parent.world.position, node.world.position, node.startRadius, node.radius, start, v[i], node.level,
-                        node.parent, static_cast<std::int32_t>(i)});
+    segments.push_back(segmentTo(skeleton, i, faked(parent) && parentIndex < i ? v[parentIndex] : 0.0));
+    v[i] = segments.back().toV;
+  }
+  return segments;
+}
+
+std::vector<ImpostorSegment> stemSegments(const Skeleton& skeleton, const std::vector<int>& stems) {
+  std::vector<ImpostorSegment> segments;
+  for (const int s : stems) {
+    const SkeletonStem& stem = skeleton.stems[static_cast<std::size_t>(s)];
+    double v = 0.0;
+    for (int n = stem.firstNode; n < stem.firstNode + stem.nodeCount; ++n) {
+      if (skeleton.nodes[static_cast<std::size_t>(n)].parent < 0) continue;
+      segments.push_back(segmentTo(skeleton, static_cast<std::size_t>(n), v));
+      v = segments.back().toV;
+    }
   }
   return segments;
 }

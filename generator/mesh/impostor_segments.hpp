@@ -20,6 +20,9 @@ struct ImpostorSegment {
 // Segments of every stem of `fromLevel` and deeper, in node order (parents before children).
 std::vector<ImpostorSegment> impostorSegments(const Skeleton& skeleton, int fromLevel);
 
+// Segments of the listed stems only, each from its attach node (the children TreeMesh::fakedStems lists).
+std::vector<ImpostorSegment> stemSegments(const Skeleton& skeleton, const std::vector<int>& stems);
+
 // A sketch of the stems of levels [fromLevel, belowLevel) for trees far away: one segment per stem segment,
 // joint to joint (the nodes around branch points left out): the tupelo's is a quarter of impostorSegments'.
 std::vector<ImpostorSegment> sketchSegments(const Skeleton& skeleton, int fromLevel, int belowLevel);

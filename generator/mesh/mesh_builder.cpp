@@ -71,9 +71,13 @@ class Builder {
     portUse_.reserve(vertices);
     stemsAt_.assign(sk_.nodes.size(), {});
     std::vector<int> trunks;
+    meshedChildren_.assign(sk_.stems.size(), false);
     for (std::size_t i = 0; i < sk_.stems.size(); ++i) {
       const SkeletonStem& st = sk_.stems[i];
       if (!meshed(static_cast<int>(i))) continue;
+      for (const int from : {st.parentStem, st.cloneOf}) {
+        if (from >= 0) meshedChildren_[static_cast<std::size_t>(from)] = true;
+      }
       if (st.attachNode >= 0) stemsAt_[static_cast<std::size_t>(st.attachNode)].push_back(static_cast<int>(i));
       else trunks.push_back(static_cast<int>(i));
     }
@@ -89,6 +93,7 @@ class Builder {
   const MeshOptions& opt_;
   TreeMesh& out_;
   std::vector<std::vector<int>> stemsAt_;  // per node: meshed stems whose first edge leaves it
+  std::vector<bool> meshedChildren_;       // per stem: whether any child or clone of it is meshed
   std::vector<Vec3> uvwSum_;
   std::vector<int> uvwCount_;
   std::vector<std::uint8_t> portUse_;      // per vertex: how many ports it is a corner of
@@ -1117,8 +1122,26 @@ class Builder {
 
   void connectSlab(int stem, const Ring& lo, const Ring& hi, const Slab& slab) {
     connectingMoved_ = slab.moved && currentStart_ && !currentStart_->top;
-    connect(stem, slab.node, lo, hi, slab.children, nullptr, false);
+    const std::vector<int> children = slab.moved ? joinedHere(lo, hi, slab.children) : slab.children;
+    if (children.empty()) band(lo, hi);
+    else connect(stem, slab.node, lo, hi, children, nullptr, false);
     connectingMoved_ = false;
+  }
+
+  // Of the children moved to a slab, those it can join: a leafy twig moved more than half its own length along
+  // its parent would run back through the parent to its skeleton (or lie past its own tip); it is a fake branch.
+  std::vector<int> joinedHere(const Ring& lo, const Ring& hi, const std::vector<int>& children) {
+    if (!opt_.fakeDisplaced) return children;
+    const Vec3 axis = directionOr(hi.center - lo.center, lo.frame.T), center = 0.5 * (lo.center + hi.center);
+    std::vector<int> joined;
+    for (const int c : children) {
+      const SkeletonStem& st = sk_.stems[static_cast<std::size_t>(c)];
+      const Vec3 attach = sk_.nodes[static_cast<std::size_t>(st.attachNode)].world.position;
+      const bool far = std::abs(glm::dot(center - attach, axis)) > 0.5 * st.length;
+      if (far && !meshedChildren_[static_cast<std::size_t>(c)]) out_.fakedStems.push_back(c);
+      else joined.push_back(c);
+    }
+    return joined;
   }
 
   // Whether the children at `node`, attached before the tube begins, leave through the neck: where the node lies

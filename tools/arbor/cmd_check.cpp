@@ -28,6 +28,7 @@ struct CheckOptions {
   int levels = 0;
   std::size_t list = 0;
   std::string json;
+  bool meshDisplaced = false;  // mesh the children MeshOptions::fakeDisplaced draws as fake branches
 };
 
 // What was checked: the mesh, and the skeleton and stems when it was grown here.
@@ -52,7 +53,9 @@ Checked load(const CheckOptions& o) {
     growth.seed = o.seed;
     growth.levels = o.levels;
     c.skeleton = source.grow(growth);
-    c.tree = buildTree(c.skeleton, BuildOptions{{}, false}).mesh;
+    MeshOptions mesh;
+    mesh.fakeDisplaced = !o.meshDisplaced;
+    c.tree = buildTree(c.skeleton, BuildOptions{mesh, false}).mesh;
     c.grown = true;
     c.title = source.name() + ", seed " + std::to_string(c.skeleton.seed) + ", " + std::to_string(c.skeleton.levels) + " levels";
   }
@@ -75,6 +78,10 @@ void printSummary(const Checked& c, const SelfIntersectionReport& r) {
   std::printf("  folds               %zu  (pairs sharing an edge)\n", r.folds);
   if (r.classified) {
     std::printf("  neck crossings      %zu  (a child against its own parent, a clone against its source)\n", r.neckCrossings);
+    if (!c.tree.fakedStems.empty()) {
+      std::printf("  faked children      %zu  (joined only far from where they attach: fake branches, not checked; --mesh-displaced meshes them)\n",
+                  c.tree.fakedStems.size());
+    }
     // Where the mesher's crossings are, by how the two stems relate and their levels: what to fix first.
     std::map<std::string, std::size_t> where;
     for (const QuadPairHit& h : r.hits) {
@@ -111,6 +118,7 @@ void writeJson(const std::string& path, const CheckOptions& o, const Checked& c,
     if (r.classified) {
       w.field("skeletonMade", static_cast<std::int64_t>(r.skeletonMade)).field("meshMade", static_cast<std::int64_t>(r.meshMade));
       w.field("neckCrossings", static_cast<std::int64_t>(r.neckCrossings));
+      w.field("fakedChildren", static_cast<std::int64_t>(c.tree.fakedStems.size()));
     }
     w.field("folds", static_cast<std::int64_t>(r.folds)).field("milliseconds", r.milliseconds);
     w.key("hits").beginArray();
@@ -166,6 +174,8 @@ void addCheckCommand(CLI::App& app, Action& action) {
   cmd->add_option("--list", o->list, "Print the first N pairs: quads, stems, levels, contact, origin, a point")
       ->check(Whole(0, 1000000000));
   cmd->add_option("--json", o->json, "Write the counts and every pair to this JSON file");
+  cmd->add_flag("--mesh-displaced", o->meshDisplaced,
+                "Mesh the twigs their parent could join only past half their length from where they attach (default: fake branches)");
   cmd->callback([o, &action] { action = [o] { return runCheck(*o); }; });
 }
 
