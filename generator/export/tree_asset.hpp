@@ -96,7 +96,7 @@ struct TreeAssetOptions {
   int lods = 1;            // levels of detail: each next one fakes one more stem level (as long as the trunk stays)
   int subdivide = 0;       // Catmull-Clark levels applied to every bark mesh (OpenSubdiv)
   bool leaves = true;
-  bool branchCards = true; // cards for the stem levels a level of detail does not mesh (and for stubs)
+  bool branchCards = true; // cards for the stem levels a level of detail does not mesh (and stubs, faked twigs)
   WindSettings wind;       // on: every level, card and leaf gets `windFrames` poses over one gust period
   int windFrames = 24;     // keyframes per period (the faster sways are coarser sampled; leaves do not flutter)
 };

@@ -24,7 +24,7 @@ void addExportOptions(CLI::App* cmd, ExportChoices& c) {
                   "level as branch cards (engines pick one; Blender imports them all, one over another); an OBJ holds one")
       ->check(Whole(1, 8));
   cmd->add_flag("--no-leaves", c.noLeaves, "Leave the leaf cards out of a mesh file");
-  cmd->add_flag("--no-cards", c.noCards, "Leave out the fake-branch cards (the stem levels not meshed, and stubs)");
+  cmd->add_flag("--no-cards", c.noCards, "Leave out the fake-branch cards (the stem levels not meshed, stubs, and twigs the mesh could not join near their attachment)");
   cmd->add_flag("--no-textures", c.noTextures,
                 "No textures: glTF materials get flat colours; OBJ gets no .mtl and no PNG files beside it");
   cmd->add_flag("--triangles", c.triangles, "Write triangles instead of quads to .obj");
