@@ -80,7 +80,8 @@ TEST_CASE("the mesher's own crossings stay at or below what was measured for eve
   // after a collar moving on until its band runs forwards: the willow 2,000 -> 1,888, its folds 42 -> 0, the
   // poplar 114 -> 102, its folds 4 -> 0; then a child's neck counted as its wood against stems but its parent: the
   // tupelo 126 -> 38, the willow 1,888 -> 1,170, the poplar 102 -> 59, the palm 108 -> 68; then children attached
-  // along a long neck leaving through it: the willow 1,170 -> 1,128, its necks 72 -> 50) plus a tenth: a
+  // along a long neck leaving through it: the willow 1,170 -> 1,128, its necks 72 -> 50; then twigs joined only
+  // past half their length faked: the willow 1,128 -> 1,018, its necks 50 -> 12) plus a tenth: a
   // change to the mesher that makes more fails here. Three seeds, not one: any change to a joint moves one tree's count by a
   // fifth either way (the exact clearance of a child's skeleton: the poplar's seed 1 went 138 -> 161, seed 2
   // 115 -> 103), the sum by a few percent.
@@ -90,7 +91,7 @@ TEST_CASE("the mesher's own crossings stay at or below what was measured for eve
   };
   for (const Measured& m : {Measured{"black-tupelo", 38, 1, 0}, Measured{"ca-black-oak", 220, 0, 113},
                             Measured{"lombardy-poplar", 59, 0, 8}, Measured{"palm", 68, 0, 0},
-                            Measured{"quaking-aspen", 38, 0, 25}, Measured{"weeping-willow", 1128, 0, 50}}) {
+                            Measured{"quaking-aspen", 38, 0, 25}, Measured{"weeping-willow", 1018, 0, 12}}) {
     INFO(m.preset);
     std::size_t meshMade = 0, folds = 0, necks = 0, skeletonMade = 0;
     for (std::uint64_t seed : {1u, 2u, 3u}) {
