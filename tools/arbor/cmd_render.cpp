@@ -44,6 +44,7 @@ struct RenderOptions {
   bool validation = false;
   bool wireframe = false;
   bool noGround = false;
+  bool meshDisplaced = false;  // mesh the twigs MeshOptions::fakeDisplaced draws as fake branches
   bool leaves = false;
   float leafDensity = 1.0f;
   float leafLod = 0.0f;
@@ -93,6 +94,7 @@ int runRender(const RenderOptions& o) {
   const Skeleton skeleton = source.grow(growth);
   BuildOptions build;
   build.mesh.levels = meshLevels;
+  build.mesh.fakeDisplaced = !o.meshDisplaced;
   build.wind = settings.wind.on();
   const TreeGeometry geometry = buildTree(skeleton, build);
   const TreeMesh& tree = geometry.mesh;
@@ -201,6 +203,8 @@ void addRenderCommand(CLI::App& app, Action& action) {
   cmd->add_flag("--validation", o->validation, "Enable the Khronos validation layer (also ARBOR_VALIDATION=1); errors fail the run");
   cmd->add_flag("--wireframe", o->wireframe, "Outline the tessellated triangles");
   cmd->add_flag("--no-ground", o->noGround, "Leave out the ground");
+  cmd->add_flag("--mesh-displaced", o->meshDisplaced,
+                "Mesh the twigs their parent could join only past half their length from where they attach (default: fake branches)");
   cmd->add_flag("--leaves", o->leaves, "Draw the leaves (textured quads from the leaf atlas, back-lit, self-shadowed)");
   cmd->add_option("--leaf-density", o->leafDensity, "Share of the leaves drawn, 0 to 1")->check(Number(0.0f, 1.0f))->capture_default_str();
   cmd->add_option("--leaf-lod", o->leafLod, "All leaves up to this distance in metres, then fewer with distance squared (0: all)")
