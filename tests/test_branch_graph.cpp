@@ -369,26 +369,27 @@ TEST_CASE("twigs attached along a long neck leave through it where they attach, 
   CHECK(checkSelfIntersections(ported, s).meshMade <= checkSelfIntersections(piled, s).meshMade);  // 0 and 4
 }
 
-TEST_CASE("a twig its parent could join only past half its length from where it attaches is a fake branch", "[graph][mesh]") {
+TEST_CASE("a twig its parent could join only more than a parent radius from where it attaches is a fake branch", "[graph][mesh]") {
   // The branch of the test above, its twigs piled on its first slab (no neck ports): 9.1, 5.2 and 1.3 branch
-  // radii (0.1 m) from their attachments, each twig 0.6 m long. The first two would be tubes from a slab more
-  // than half their length along (0.91 and 0.52 m): drawn as fake branches on their skeletons; the third is meshed.
+  // radii (0.1 m) from their attachments, each twig 0.6 m long; a fourth leaves 2.8 m along, past where the tube
+  // begins, on a slab of its own. The three piled ones are drawn as fake branches on their skeletons (a tube from
+  // the slab runs back through the branch to its skeleton, or sits beside the trunk where nothing attaches); the
+  // fourth is meshed where it attaches.
   const Vec3 dir(std::sin(radians(15.0)), 0.0, std::cos(radians(15.0)));
   BranchGraph g;
   g.nodes = {at(0, 0, 0, -1, 0.3), at(0, 0, 2, 0, 0.3), at(0, 0, 6, 1, 0.25)};
   int prev = 1;
-  std::vector<int> twigNodes;
   for (int k = 1; k <= 10; ++k) {
     const Vec3 p = Vec3(0, 0, 2) + dir * (0.4 * k);
     g.nodes.push_back(at(p.x, p.y, p.z, prev, 0.1));
     prev = static_cast<int>(g.nodes.size()) - 1;
-    if (k >= 3 && k <= 5) {
+    if ((k >= 3 && k <= 5) || k == 7) {
       const Vec3 t = p + glm::normalize(Vec3(1.0, k == 4 ? 1.0 : -1.0, 0.6)) * 0.6;
       g.nodes.push_back(at(t.x, t.y, t.z, prev, 0.02));
     }
   }
   const Skeleton s = graphToSkeleton(g, unmerged());
-  REQUIRE(s.stems.size() == 5);
+  REQUIRE(s.stems.size() == 6);
   MeshOptions piled;
   piled.neckPorts = false;
   MeshOptions all = piled;
@@ -396,14 +397,22 @@ TEST_CASE("a twig its parent could join only past half its length from where it 
   const TreeMesh faked = buildTreeMesh(s, piled), meshed = buildTreeMesh(s, all);
   test::checkClosedManifold(faked.mesh);
   CHECK(meshed.fakedStems.empty());
-  REQUIRE(faked.fakedStems.size() == 2);
+  REQUIRE(faked.fakedStems.size() == 3);
   for (const int c : faked.fakedStems) {
     const SkeletonStem& st = s.stems[static_cast<std::size_t>(c)];
     CHECK(st.level == 2);
     CHECK(std::none_of(faked.rings.begin(), faked.rings.end(), [&](const MeshRing& r) { return r.stem == c; }));
-    // Of the three twigs, the two nearest the branch's base (the farthest from the first slab).
-    CHECK(s.nodes[static_cast<std::size_t>(st.attachNode)].world.position.z < 2.0 + 1.7 * dir.z);
+    // The three twigs attached before the branch's tube begins, not the one past it.
+    CHECK(s.nodes[static_cast<std::size_t>(st.attachNode)].world.position.z < 2.0 + 2.1 * dir.z);
   }
+  // The fourth is meshed, its first ring within the floor's 1.5 parent radii.
+  std::size_t meshedTwigs = 0;
+  for (const ChildPlacement& c : childPlacements(s, faked)) {
+    if (s.stems[static_cast<std::size_t>(c.stem)].level != 2) continue;
+    ++meshedTwigs;
+    CHECK(c.offset <= 1.5);
+  }
+  CHECK(meshedTwigs == 1);
   // Each left-out twig is drawn instead: one fake-branch segment per skeleton edge, from its attachment.
   BuildOptions build;
   build.mesh = piled;

@@ -664,10 +664,13 @@ TEST_CASE("a complete asset: textures, cards, leaves shared by every level of de
   CHECK(materials["leaves"]["alphaMode"] == "MASK");
   CHECK(materials["leaves"]["doubleSided"] == true);
   CHECK(materials["branch_cards"]["doubleSided"] == true);
-  // Level 0 has no cards (every level meshed); the leaves are the same accessors in all three.
-  CHECK(doc["meshes"][0]["primitives"].size() == 2);
+  // Level 0 meshes every level: its only cards are the twigs the mesh could not join near their attachment (this
+  // tree has some); the leaves, last, are the same accessors in all three.
+  REQUIRE_FALSE(asset.lods[0].fakedStems.empty());
+  CHECK(doc["meshes"][0]["primitives"].size() == 3);
   CHECK(doc["meshes"][2]["primitives"].size() == 3);
-  CHECK(doc["meshes"][0]["primitives"][1] == doc["meshes"][2]["primitives"][2]);
+  CHECK(doc["meshes"][0]["primitives"][2] == doc["meshes"][2]["primitives"][2]);
+  CHECK(doc["meshes"][0]["primitives"][1] != doc["meshes"][2]["primitives"][1]);
 
   for (const bool binary : {false, true}) {
     const std::string path = writeTemp(std::string("aspen-asset") + (binary ? ".glb" : ".gltf"), binary ? writeGlb(asset) : writeGltf(asset));

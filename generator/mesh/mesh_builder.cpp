@@ -33,6 +33,9 @@ constexpr double kNeckPortsFrom = 12.0;
 // A child attached farther from the neck's line than this many of its parent's radii joins the first slab: the
 // neck is not where its skeleton is (barley's stalks leave their hub along necks 400 radii long).
 constexpr double kNeckReach = 20.0;
+// A leafy twig whose connection lies farther along its parent than this many parent radii from its attachment is a
+// fake branch (the joint floor of docs/mesh.md: first rings within 1.5 parent radii).
+constexpr double kFakeFrom = 1.0;
 
 struct Ring {
   std::array<std::uint32_t, 4> v{};
@@ -71,12 +74,16 @@ class Builder {
     portUse_.reserve(vertices);
     stemsAt_.assign(sk_.nodes.size(), {});
     std::vector<int> trunks;
-    meshedChildren_.assign(sk_.stems.size(), false);
+    branching_.assign(sk_.stems.size(), false);
+    clones_.assign(sk_.stems.size(), {});
     for (std::size_t i = 0; i < sk_.stems.size(); ++i) {
       const SkeletonStem& st = sk_.stems[i];
       if (!meshed(static_cast<int>(i))) continue;
-      for (const int from : {st.parentStem, st.cloneOf}) {
-        if (from >= 0) meshedChildren_[static_cast<std::size_t>(from)] = true;
+      if (st.cloneOf >= 0) clones_[static_cast<std::size_t>(st.cloneOf)].push_back(static_cast<int>(i));
+      // A meshed child makes its parent, and the stems that parent is a clone of, branching.
+      for (int x = st.cloneOf < 0 ? st.parentStem : -1; x >= 0 && !branching_[static_cast<std::size_t>(x)];
+           x = sk_.stems[static_cast<std::size_t>(x)].cloneOf) {
+        branching_[static_cast<std::size_t>(x)] = true;
       }
       if (st.attachNode >= 0) stemsAt_[static_cast<std::size_t>(st.attachNode)].push_back(static_cast<int>(i));
       else trunks.push_back(static_cast<int>(i));
@@ -93,7 +100,8 @@ class Builder {
   const MeshOptions& opt_;
   TreeMesh& out_;
   std::vector<std::vector<int>> stemsAt_;  // per node: meshed stems whose first edge leaves it
-  std::vector<bool> meshedChildren_;       // per stem: whether any child or clone of it is meshed
+  std::vector<bool> branching_;            // per stem: whether it or a clone after it has a meshed child (not a twig)
+  std::vector<std::vector<int>> clones_;   // per stem: its meshed clones
   std::vector<Vec3> uvwSum_;
   std::vector<int> uvwCount_;
   std::vector<std::uint8_t> portUse_;      // per vertex: how many ports it is a corner of
@@ -1128,20 +1136,33 @@ class Builder {
     connectingMoved_ = false;
   }
 
-  // Of the children moved to a slab, those it can join: a leafy twig moved more than half its own length along
-  // its parent would run back through the parent to its skeleton (or lie past its own tip); it is a fake branch.
-  std::vector<int> joinedHere(const Ring& lo, const Ring& hi, const std::vector<int>& children) {
+  // Of the children moved to a connection centred at `center` on a parent of radius ra there, those it joins. A
+  // twig whose connection would lie more than kFakeFrom parent radii (or half its own length) along the parent from
+  // where it attaches, inside its grandparent's wood where the parent has no surface, is a fake branch on its
+  // skeleton instead: meshed there, its neck ran back through the parent to its skeleton and cut its neighbours.
+  std::vector<int> joinedHere(const Vec3& center, double ra, const std::vector<int>& children) {
     if (!opt_.fakeDisplaced) return children;
-    const Vec3 axis = directionOr(hi.center - lo.center, lo.frame.T), center = 0.5 * (lo.center + hi.center);
     std::vector<int> joined;
     for (const int c : children) {
       const SkeletonStem& st = sk_.stems[static_cast<std::size_t>(c)];
-      const Vec3 attach = sk_.nodes[static_cast<std::size_t>(st.attachNode)].world.position;
-      const bool far = std::abs(glm::dot(center - attach, axis)) > 0.5 * st.length;
-      if (far && !meshedChildren_[static_cast<std::size_t>(c)]) out_.fakedStems.push_back(c);
+      const SkeletonNode& at = sk_.nodes[static_cast<std::size_t>(st.attachNode)];
+      // Measured along the parent's skeleton, as the joint floor is (a slab's own axis may lean off it).
+      const double along = std::abs(glm::dot(center - at.world.position, at.world.direction()));
+      const bool far = along > kFakeFrom * std::max(ra, at.radius) || along > 0.5 * st.length;
+      if (far && !branching_[static_cast<std::size_t>(c)]) fakeTwig(c);
       else joined.push_back(c);
     }
     return joined;
+  }
+
+  // A twig and the clones it splits into (never built: they would have left through its split) are fake branches.
+  void fakeTwig(int stem) {
+    out_.fakedStems.push_back(stem);
+    for (int c : clones_[static_cast<std::size_t>(stem)]) fakeTwig(c);
+  }
+
+  std::vector<int> joinedHere(const Ring& lo, const Ring& hi, const std::vector<int>& children) {
+    return joinedHere(0.5 * (lo.center + hi.center), std::max(lo.radius, hi.radius), children);
   }
 
   // Whether the children at `node`, attached before the tube begins, leave through the neck: where the node lies
@@ -1237,11 +1258,14 @@ class Builder {
     }
     Ring prev = a;
     for (const Group& g : groups) {
+      const double mid = 0.5 * (g.lo + g.hi) / len;
+      const std::vector<int> joined = joinedHere(a.center + axis * mid, a.radius + (b.radius - a.radius) * mid, g.children);
+      if (joined.empty()) continue;  // the band from prev runs on over the group's place
       const Ring lo = between(neck.stem, a, b, g.lo / len);
       const Ring hi = between(neck.stem, a, b, g.hi / len);
       band(prev, lo);
       connectingMoved_ = currentStart_ && !currentStart_->top;
-      connect(neck.stem, g.node, lo, hi, g.children, nullptr, false);
+      connect(neck.stem, g.node, lo, hi, joined, nullptr, false);
       connectingMoved_ = false;
       prev = hi;
     }
