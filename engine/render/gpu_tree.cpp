@@ -151,6 +151,15 @@ GpuTree uploadTree(const vk::VulkanContext& context, const QuadMesh& mesh, const
     }
   }
   tree.plantingDepth = limitTop - tree.bounds.lo.z + 0.5f * baseRadius;
+  // The fake branches are part of the tree too: a camera framing the bounds frames them (planted by the mesh alone).
+  for (const auto* list : {&impostors, &sketch}) {
+    for (const ImpostorSegment& seg : *list) {
+      for (const auto& [p, r] : {std::pair{seg.from, seg.fromRadius}, std::pair{seg.to, seg.toRadius}}) {
+        tree.bounds.lo = glm::min(tree.bounds.lo, glm::vec3(p) - glm::vec3(static_cast<float>(r)));
+        tree.bounds.hi = glm::max(tree.bounds.hi, glm::vec3(p) + glm::vec3(static_cast<float>(r)));
+      }
+    }
+  }
   return tree;
 }
 

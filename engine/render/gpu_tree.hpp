@@ -28,7 +28,7 @@ struct GpuTree {
   std::uint32_t regular = 0, extraordinary = 0, fallback = 0;
   std::size_t bytes = 0;  // all buffers together
   std::uint64_t id = 0;   // unique per upload: the renderer keeps this mesh's control points under it
-  Bounds bounds;           // object space
+  Bounds bounds;           // object space, of the mesh and the fake branches
   Bounds leafBounds;       // object space, of the leaves' bases: no leaf is nearer the eye than this box
   float plantingDepth = 0;  // how far the tree is sunk so that the closed base's rounded limit surface is underground
 };
