@@ -436,6 +436,41 @@ TEST_CASE("a twig its parent could join only more than a parent radius from wher
   CHECK(checkSelfIntersections(faked, s).meshMade <= checkSelfIntersections(meshed, s).meshMade);
 }
 
+TEST_CASE("a twig whose wood never clears its parent's is a fake branch", "[graph][mesh]") {
+  // A trunk of radius 0.3; at 2 m a twig 1.2 m long leaves it at 15 degrees, ending 0.31 m off its axis: just
+  // out of its wood (not a stub) but within its surface; another leaves at 60 degrees and clears it.
+  BranchGraph g;
+  g.nodes = {at(0, 0, 0, -1, 0.3), at(0, 0, 2, 0, 0.3), at(0, 0, 4, 1, 0.25)};
+  const double a = radians(15.0);
+  g.nodes.push_back(at(1.2 * std::sin(a), 0, 2 + 1.2 * std::cos(a), 1, 0.01));
+  g.nodes.push_back(at(0.9, 0, 2.5, 1, 0.03));
+  const Skeleton s = graphToSkeleton(g, unmerged());
+  REQUIRE(s.stems.size() == 3);
+  int inside = -1, clear = -1;
+  for (std::size_t i = 1; i < s.stems.size(); ++i) {
+    const Vec3 tip = s.nodes[static_cast<std::size_t>(s.stems[i].firstNode + s.stems[i].nodeCount - 1)].world.position;
+    (tip.x < 0.5 ? inside : clear) = static_cast<int>(i);
+  }
+  REQUIRE(inside > 0);
+  REQUIRE(clear > 0);
+  MeshOptions all;
+  all.fakeDisplaced = false;
+  const TreeMesh faked = buildTreeMesh(s), meshed = buildTreeMesh(s, all);
+  test::checkClosedManifold(faked.mesh);
+  CHECK(faked.fakedStems == std::vector<int>{inside});
+  CHECK(meshed.fakedStems.empty());
+  auto hasRings = [](const TreeMesh& t, int stem) {
+    return std::any_of(t.rings.begin(), t.rings.end(), [&](const MeshRing& r) { return r.stem == stem; });
+  };
+  CHECK_FALSE(hasRings(faked, inside));
+  CHECK(hasRings(faked, clear));
+  CHECK(hasRings(meshed, inside));
+  // It is drawn instead: one fake-branch segment per skeleton edge.
+  BuildOptions build;
+  build.patches = false;
+  CHECK(buildTree(s, build).impostors.size() == static_cast<std::size_t>(s.stems[static_cast<std::size_t>(inside)].nodeCount));
+}
+
 TEST_CASE("a stem bending tighter than its radius leaves out the cross sections whose bands would run backwards", "[graph][mesh]") {
   // A stem of radius 0.15 turning through a right angle about 0.1 m in radius: nodes closer than its radius.
   BranchGraph g;

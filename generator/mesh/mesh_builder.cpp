@@ -18,6 +18,7 @@
 #include "mesh_attributes.hpp"
 #include "mesh_checks.hpp"
 #include "quad_contact.hpp"
+#include "stem_capsules.hpp"
 #include "stem_polyline.hpp"
 #include "tree_mesh.hpp"
 
@@ -84,6 +85,14 @@ class Builder {
       for (int x = st.cloneOf < 0 ? st.parentStem : -1; x >= 0 && !branching_[static_cast<std::size_t>(x)];
            x = sk_.stems[static_cast<std::size_t>(x)].cloneOf) {
         branching_[static_cast<std::size_t>(x)] = true;
+      }
+    }
+    for (std::size_t i = 0; i < sk_.stems.size(); ++i) {
+      const SkeletonStem& st = sk_.stems[i];
+      if (!meshed(static_cast<int>(i))) continue;
+      if (insideParent(static_cast<int>(i))) {
+        fakeTwig(static_cast<int>(i));
+        continue;
       }
       if (st.attachNode >= 0) stemsAt_[static_cast<std::size_t>(st.attachNode)].push_back(static_cast<int>(i));
       else trunks.push_back(static_cast<int>(i));
@@ -1153,6 +1162,21 @@ class Builder {
       else joined.push_back(c);
     }
     return joined;
+  }
+
+  // A twig whose wood never clears its parent's (it leaves at a few degrees and ends within its parent's surface):
+  // its tube would begin past its tip and lie in its parent's side. It is a fake branch, as a stub ending inside is.
+  bool insideParent(int stem) const {
+    const SkeletonStem& st = sk_.stems[static_cast<std::size_t>(stem)];
+    return opt_.fakeDisplaced && st.parentStem >= 0 && st.cloneOf < 0 && !branching_[static_cast<std::size_t>(stem)] &&
+           parentClearance(sk_, stem) >= reachLength(stem);
+  }
+
+  // The length of a stem's axis and of the longest line of clones it splits into.
+  double reachLength(int stem) const {
+    double clones = 0.0;
+    for (int c : clones_[static_cast<std::size_t>(stem)]) clones = std::max(clones, reachLength(c));
+    return axisLength(sk_, stem) + clones;
   }
 
   // A twig and the clones it splits into (never built: they would have left through its split) are fake branches.

@@ -23,8 +23,8 @@ struct MeshOptions {
   bool neckPorts = true;
   // A twig (no meshed child, nor any of its clones) that its parent can join only more than a parent radius (or half
   // its own length) along from where it attaches (attached where the parent has no tube yet, inside or against its
-  // own parent) is drawn, with its clones, as a fake branch on its skeleton (TreeMesh::fakedStems); off: meshed
-  // from that far slab, however far it is.
+  // own parent) is drawn, with its clones, as a fake branch on its skeleton (TreeMesh::fakedStems), as is a twig
+  // whose wood never clears its parent's; off: meshed from that far slab, however far it is.
   bool fakeDisplaced = true;
 };
 

@@ -145,12 +145,32 @@ std::vector<std::vector<Capsule>> stemCapsules(const Skeleton& skeleton, StemSta
     } else if (start == StemStart::OutOfParentWood) {
       cutStart(out, lengthInside(chains[s], chains[static_cast<std::size_t>(stem.parentStem)]));
     } else {
-      const Vec3 from = attach.world.direction(), to = glm::normalize(out.front().b - out.front().a);
-      const double sine = std::max(kMinSine, glm::length(glm::cross(from, to)));
-      cutStart(out, kSurfaceReach * (attach.radius + out.front().ra) / sine);
+      cutStart(out, parentClearance(skeleton, static_cast<int>(s)));
     }
   }
   return capsules;
+}
+
+double parentClearance(const Skeleton& skeleton, int stem) {
+  const SkeletonStem& st = skeleton.stems[static_cast<std::size_t>(stem)];
+  if (st.parentStem < 0 || st.cloneOf >= 0 || st.attachNode < 0 || st.nodeCount == 0) return 0.0;
+  const SkeletonNode& attach = skeleton.nodes[static_cast<std::size_t>(st.attachNode)];
+  const SkeletonNode& first = skeleton.nodes[static_cast<std::size_t>(st.firstNode)];
+  const Vec3 edge = first.world.position - attach.world.position;
+  const double len = glm::length(edge);
+  const double sine = len > 0.0 ? std::max(kMinSine, glm::length(glm::cross(attach.world.direction(), edge / len))) : kMinSine;
+  const double firstRadius = first.startRadius > 0.0 ? first.startRadius : attach.radius;  // as its first capsule's
+  return kSurfaceReach * (attach.radius + firstRadius) / sine;
+}
+
+double axisLength(const Skeleton& skeleton, int stem) {
+  const SkeletonStem& st = skeleton.stems[static_cast<std::size_t>(stem)];
+  double length = 0.0;
+  for (int k = 0; k < st.nodeCount; ++k) {
+    const SkeletonNode& n = skeleton.nodes[static_cast<std::size_t>(st.firstNode + k)];
+    if (n.parent >= 0) length += glm::distance(n.world.position, skeleton.nodes[static_cast<std::size_t>(n.parent)].world.position);
+  }
+  return length;
 }
 
 }  // namespace arbor
