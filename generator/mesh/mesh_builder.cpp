@@ -77,10 +77,13 @@ class Builder {
     std::vector<int> trunks;
     branching_.assign(sk_.stems.size(), false);
     clones_.assign(sk_.stems.size(), {});
+    children_.assign(sk_.stems.size(), {});
+    faked_.assign(sk_.stems.size(), false);
     for (std::size_t i = 0; i < sk_.stems.size(); ++i) {
       const SkeletonStem& st = sk_.stems[i];
       if (!meshed(static_cast<int>(i))) continue;
       if (st.cloneOf >= 0) clones_[static_cast<std::size_t>(st.cloneOf)].push_back(static_cast<int>(i));
+      else if (st.parentStem >= 0) children_[static_cast<std::size_t>(st.parentStem)].push_back(static_cast<int>(i));
       // A meshed child makes its parent, and the stems that parent is a clone of, branching.
       for (int x = st.cloneOf < 0 ? st.parentStem : -1; x >= 0 && !branching_[static_cast<std::size_t>(x)];
            x = sk_.stems[static_cast<std::size_t>(x)].cloneOf) {
@@ -111,6 +114,8 @@ class Builder {
   std::vector<std::vector<int>> stemsAt_;  // per node: meshed stems whose first edge leaves it
   std::vector<bool> branching_;            // per stem: whether it or a clone after it has a meshed child (not a twig)
   std::vector<std::vector<int>> clones_;   // per stem: its meshed clones
+  std::vector<std::vector<int>> children_; // per stem: its meshed children (not clones)
+  std::vector<bool> faked_;                // per stem: in out_.fakedStems
   std::vector<Vec3> uvwSum_;
   std::vector<int> uvwCount_;
   std::vector<std::uint8_t> portUse_;      // per vertex: how many ports it is a corner of
@@ -1148,7 +1153,8 @@ class Builder {
   // Of the children moved to a connection centred at `center` on a parent of radius ra there, those it joins. A
   // twig whose connection would lie more than kFakeFrom parent radii (or half its own length) along the parent from
   // where it attaches, inside its grandparent's wood where the parent has no surface, is a fake branch on its
-  // skeleton instead: meshed there, its neck ran back through the parent to its skeleton and cut its neighbours.
+  // skeleton instead: meshed there, its neck ran back through the parent to its skeleton and cut its neighbours. So
+  // is a branch bearing only twigs, two or more levels from its trunk (a trunk's own limbs are always meshed).
   std::vector<int> joinedHere(const Vec3& center, double ra, const std::vector<int>& children) {
     if (!opt_.fakeDisplaced) return children;
     std::vector<int> joined;
@@ -1158,7 +1164,7 @@ class Builder {
       // Measured along the parent's skeleton, as the joint floor is (a slab's own axis may lean off it).
       const double along = std::abs(glm::dot(center - at.world.position, at.world.direction()));
       const bool far = along > kFakeFrom * std::max(ra, at.radius) || along > 0.5 * st.length;
-      if (far && !branching_[static_cast<std::size_t>(c)]) fakeTwig(c);
+      if (far && (!branching_[static_cast<std::size_t>(c)] || (st.level >= 2 && bearsTwigsOnly(c)))) fakeTwig(c);
       else joined.push_back(c);
     }
     return joined;
@@ -1179,10 +1185,22 @@ class Builder {
     return axisLength(sk_, stem) + clones;
   }
 
-  // A twig and the clones it splits into (never built: they would have left through its split) are fake branches.
+  // A twig, or a twig-bearing branch, with the clones it splits into and its children (never built: they would have
+  // left through its split or its slabs) are fake branches.
   void fakeTwig(int stem) {
+    if (faked_[static_cast<std::size_t>(stem)]) return;  // a twig inside its parent is faked before its parent is
+    faked_[static_cast<std::size_t>(stem)] = true;
     out_.fakedStems.push_back(stem);
     for (int c : clones_[static_cast<std::size_t>(stem)]) fakeTwig(c);
+    for (int c : children_[static_cast<std::size_t>(stem)]) fakeTwig(c);
+  }
+
+  // Whether every meshed child of a stem and of its clones is a twig.
+  bool bearsTwigsOnly(int stem) const {
+    const auto& children = children_[static_cast<std::size_t>(stem)];
+    const auto& clones = clones_[static_cast<std::size_t>(stem)];
+    return std::none_of(children.begin(), children.end(), [&](int c) { return branching_[static_cast<std::size_t>(c)]; }) &&
+           std::all_of(clones.begin(), clones.end(), [&](int c) { return bearsTwigsOnly(c); });
   }
 
   std::vector<int> joinedHere(const Ring& lo, const Ring& hi, const std::vector<int>& children) {

@@ -189,7 +189,7 @@ void addOptions(CLI::App* cmd, GenerateOptions& o, const char* input) {
       ->check(Whole(0, 8));
   cmd->add_flag("--open-base", o.mesh.openBase, "Leave the ring at the trunk base open (closed by default)");
   cmd->add_flag_callback("--mesh-displaced", [&o] { o.mesh.fakeDisplaced = false; },
-                         "Mesh the twigs their parent could join only more than a parent radius from where they attach, from "
+                         "Mesh the twigs (and twig-bearing branches) their parent could join only more than a parent radius from where they attach, from "
                          "that far slab (default: fake branches on their skeletons, as stubs)");
   addExportOptions(cmd, o.exported);
   cmd->add_option("--subdivide", o.subdivide, "Export the bark mesh (every level of detail) after N Catmull-Clark levels (OpenSubdiv)")
