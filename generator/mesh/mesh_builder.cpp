@@ -1170,19 +1170,13 @@ class Builder {
     return joined;
   }
 
-  // A twig whose wood never clears its parent's (it leaves at a few degrees and ends within its parent's surface):
-  // its tube would begin past its tip and lie in its parent's side. It is a fake branch, as a stub ending inside is.
+  // A twig whose wood does not clear its parent's before it ends or splits (it leaves at a few degrees): its tube
+  // would begin past its tip, or its split slab lie in its parent's side. It is a fake branch with its clones, as a
+  // stub ending inside is.
   bool insideParent(int stem) const {
     const SkeletonStem& st = sk_.stems[static_cast<std::size_t>(stem)];
     return opt_.fakeDisplaced && st.parentStem >= 0 && st.cloneOf < 0 && !branching_[static_cast<std::size_t>(stem)] &&
-           parentClearance(sk_, stem) >= reachLength(stem);
-  }
-
-  // The length of a stem's axis and of the longest line of clones it splits into.
-  double reachLength(int stem) const {
-    double clones = 0.0;
-    for (int c : clones_[static_cast<std::size_t>(stem)]) clones = std::max(clones, reachLength(c));
-    return axisLength(sk_, stem) + clones;
+           parentClearance(sk_, stem) >= axisLength(sk_, stem);
   }
 
   // A twig, or a twig-bearing branch, with the clones it splits into and its children (never built: they would have
