@@ -79,7 +79,7 @@ void printSummary(const Checked& c, const SelfIntersectionReport& r) {
   if (r.classified) {
     std::printf("  neck crossings      %zu  (a child against its own parent, a clone against its source)\n", r.neckCrossings);
     if (!c.tree.fakedStems.empty()) {
-      std::printf("  faked children      %zu  (joined only far from where they attach: fake branches, not checked; --mesh-displaced meshes them)\n",
+      std::printf("  faked stems         %zu  (twigs joined only far from where they attach or inside their parent, with their clones: fake branches, not checked; --mesh-displaced meshes them)\n",
                   c.tree.fakedStems.size());
     }
     // Where the mesher's crossings are, by how the two stems relate and their levels: what to fix first.
@@ -118,7 +118,7 @@ void writeJson(const std::string& path, const CheckOptions& o, const Checked& c,
     if (r.classified) {
       w.field("skeletonMade", static_cast<std::int64_t>(r.skeletonMade)).field("meshMade", static_cast<std::int64_t>(r.meshMade));
       w.field("neckCrossings", static_cast<std::int64_t>(r.neckCrossings));
-      w.field("fakedChildren", static_cast<std::int64_t>(c.tree.fakedStems.size()));
+      w.field("fakedStems", static_cast<std::int64_t>(c.tree.fakedStems.size()));
     }
     w.field("folds", static_cast<std::int64_t>(r.folds)).field("milliseconds", r.milliseconds);
     w.key("hits").beginArray();

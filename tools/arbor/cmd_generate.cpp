@@ -142,7 +142,7 @@ int runGenerate(const GenerateOptions& o) {
     std::printf("  mesh             %zu quads, %zu vertices in %.1f ms; %zu joints\n", tree.mesh.quads.size(),
                 tree.mesh.vertexCount(), meshMs, tree.joints.size());
     if (!tree.fakedStems.empty()) {
-      std::printf("  faked children   %zu (the mesh could join them only more than a parent radius from where they attach: fake branches)\n",
+      std::printf("  faked stems      %zu (twigs the mesh could join only more than a parent radius from where they attach, or inside their parent, with their clones: fake branches)\n",
                   tree.fakedStems.size());
     }
     std::printf("  topology         %s, %zu piece(s), Euler characteristic %d, valence %d..%d\n",
