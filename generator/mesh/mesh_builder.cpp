@@ -34,8 +34,8 @@ constexpr double kNeckPortsFrom = 12.0;
 // A child attached farther from the neck's line than this many of its parent's radii joins the first slab: the
 // neck is not where its skeleton is (barley's stalks leave their hub along necks 400 radii long).
 constexpr double kNeckReach = 20.0;
-// A leafy twig whose connection lies farther along its parent than this many parent radii from its attachment is a
-// fake branch (the joint floor of docs/mesh.md: first rings within 1.5 parent radii).
+// A twig (or a twig-bearing branch off a limb) whose connection lies farther along its parent than this many parent
+// radii from its attachment is a fake branch (the joint floor of docs/mesh.md: first rings within 1.5 parent radii).
 constexpr double kFakeFrom = 1.0;
 
 struct Ring {
@@ -1176,7 +1176,7 @@ class Builder {
   bool insideParent(int stem) const {
     const SkeletonStem& st = sk_.stems[static_cast<std::size_t>(stem)];
     return opt_.fakeDisplaced && st.parentStem >= 0 && st.cloneOf < 0 && !branching_[static_cast<std::size_t>(stem)] &&
-           parentClearance(sk_, stem) >= axisLength(sk_, stem);
+           parentClearance(sk_, stem) >= StemPolyline(sk_, stem).length();
   }
 
   // A twig, or a twig-bearing branch, with the clones it splits into and its children (never built: they would have

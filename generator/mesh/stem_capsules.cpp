@@ -163,14 +163,4 @@ double parentClearance(const Skeleton& skeleton, int stem) {
   return kSurfaceReach * (attach.radius + firstRadius) / sine;
 }
 
-double axisLength(const Skeleton& skeleton, int stem) {
-  const SkeletonStem& st = skeleton.stems[static_cast<std::size_t>(stem)];
-  double length = 0.0;
-  for (int k = 0; k < st.nodeCount; ++k) {
-    const SkeletonNode& n = skeleton.nodes[static_cast<std::size_t>(st.firstNode + k)];
-    if (n.parent >= 0) length += glm::distance(n.world.position, skeleton.nodes[static_cast<std::size_t>(n.parent)].world.position);
-  }
-  return length;
-}
-
 }  // namespace arbor

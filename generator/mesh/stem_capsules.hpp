@@ -26,9 +26,6 @@ enum class StemStart {
 // radii over the sine of the angle between them, with the surface's reach; 0 for trunks and clones.
 double parentClearance(const Skeleton& skeleton, int stem);
 
-// The length of a stem's axis from the node it leaves (its attach node, or its own first for a trunk).
-double axisLength(const Skeleton& skeleton, int stem);
-
 // Per stem, its edges as capsules, a child's or clone's starting as `start` says.
 std::vector<std::vector<Capsule>> stemCapsules(const Skeleton& skeleton, StemStart start = StemStart::ClearOfParent);
 
