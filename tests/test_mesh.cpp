@@ -4,10 +4,12 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <set>
 
 #include "common/input_error.hpp"
 #include "growth/weber_penn/weber_penn.hpp"
 #include "mesh/cross_section.hpp"
+#include "mesh/hub_layout.hpp"
 #include "mesh/impostor_segments.hpp"
 #include "mesh/mesh_checks.hpp"
 #include "mesh/self_intersection.hpp"
@@ -330,6 +332,76 @@ TEST_CASE("many trunks meet in one closed hub, and every vertex keeps a level th
     CHECK(r.eulerCharacteristic == 2);
     CHECK(*std::max_element(tree.mesh.level.begin(), tree.mesh.level.end()) <= 1);
     CHECK(std::count(tree.mesh.level.begin(), tree.mesh.level.end(), 0) > 8 * trunks);
+  }
+}
+
+TEST_CASE("a wide hub gives each trunk its own port cell, keeping the trunks' order across and along it", "[mesh][trunks]") {
+  for (std::size_t n : {6u, 19u, 49u, 120u}) {
+    INFO(n << " trunks");
+    std::vector<std::array<double, 2>> wanted;
+    for (std::size_t i = 0; i < n; ++i) {  // a sunflower spiral, as trunks spread about a tuft
+      const double r = std::sqrt(static_cast<double>(i) + 0.5), a = 2.39996 * static_cast<double>(i);
+      wanted.push_back({r * std::cos(a), r * std::sin(a)});
+    }
+    const HubLayout layout = layOutHub(wanted);
+    REQUIRE(layout.cell.size() == n);
+    CHECK(static_cast<std::size_t>(layout.slots * layout.slots) >= n);
+    std::set<std::array<int, 2>> used;
+    for (const auto& c : layout.cell) {
+      CHECK(c[0] % 2 == 1);  // odd: no two ports share a corner
+      CHECK(c[1] % 2 == 1);
+      CHECK(c[0] < 2 * layout.slots);
+      CHECK(c[1] < 2 * layout.slots);
+      used.insert(c);
+    }
+    CHECK(used.size() == n);
+    for (std::size_t a = 0; a < n; ++a) {
+      for (std::size_t b = 0; b < n; ++b) {
+        if (wanted[a][0] < wanted[b][0]) CHECK(layout.cell[a][0] <= layout.cell[b][0]);
+        if (layout.cell[a][0] == layout.cell[b][0] && wanted[a][1] < wanted[b][1]) CHECK(layout.cell[a][1] < layout.cell[b][1]);
+      }
+    }
+  }
+}
+
+TEST_CASE("a grass's stalks leave a wide hub and meet their skeletons at one level, their necks side by side", "[mesh][trunks][real-data]") {
+  const std::vector<std::string> files = test::arbaroSpeciesFiles(ARBOR_SPECIES_DIR);
+  if (files.empty()) return;  // arbaroSpeciesFiles said why
+  // Mesh-made pairs between stalks (or a stalk and the hub), seeds 1-3: with the box hub and its sub-boxes 2,392
+  // (wheat), 294 (barley), 307 (rush).
+  struct Measured {
+    const char* file;
+    std::size_t pairs;
+  };
+  for (const Measured& m : {Measured{"wheat", 113}, Measured{"barley", 3}, Measured{"rush", 28}}) {
+    INFO(m.file);
+    std::size_t pairs = 0;
+    for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+      const Skeleton s = grow(loadSpeciesFile(std::string(ARBOR_SPECIES_DIR) + "/" + m.file + ".xml"), seed);
+      const TreeMesh tree = buildTreeMesh(s);
+      const MeshTopologyReport r = checkTopology(tree.mesh);
+      CHECK(r.boundaryEdges == 0);
+      CHECK(r.nonManifoldEdges == 0);
+      CHECK(r.components == 1);
+      // Every stalk's first cross section on its skeleton stands at the same height: where the necks end.
+      std::vector<double> levels;
+      std::vector<bool> seen(s.stems.size(), false);
+      for (const MeshRing& ring : tree.rings) {
+        if (ring.stem < 0 || ring.arc < 0.0 || seen[static_cast<std::size_t>(ring.stem)]) continue;
+        seen[static_cast<std::size_t>(ring.stem)] = true;
+        if (s.stems[static_cast<std::size_t>(ring.stem)].attachNode == 0) levels.push_back(ring.center.z - s.nodes[0].world.position.z);
+      }
+      REQUIRE(levels.size() > 5);
+      const auto [lo, hi] = std::minmax_element(levels.begin(), levels.end());
+      CHECK(*lo > 0.0);
+      CHECK(*hi - *lo < 1e-6 * *hi);
+      for (const QuadPairHit& h : checkSelfIntersections(tree, s).hits) {
+        const bool stalks = h.relation == StemRelation::Hub || (h.relation == StemRelation::Siblings && s.stems[static_cast<std::size_t>(h.stemA)].level == 0);
+        pairs += h.origin == PairOrigin::Mesh && stalks ? 1 : 0;
+      }
+    }
+    INFO(pairs << " mesh-made pairs between stalks");
+    CHECK(pairs <= m.pairs);
   }
 }
 

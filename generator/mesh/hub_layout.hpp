@@ -1,0 +1,24 @@
+#pragma once
+// Ports for many trunks on one hub (a grass's tuft): the hub's top is a grid of cells, and each trunk leaves the
+// port cell nearest where its axis crosses the hub's level, so that the necks from hub to skeleton run side by
+// side as the skeleton's stems do, instead of crossing from sub-boxes crowded at the centre.
+#include <array>
+#include <vector>
+
+#include "growth/math.hpp"
+
+namespace arbor {
+
+struct HubLayout {
+  int slots = 0;                         // port cells a side; the top is 2 slots + 1 cells a side
+  std::vector<std::array<int, 2>> cell;  // per trunk: its port cell (i, j), both odd, so no two ports touch
+};
+
+// Port slots a side for n trunks: their axes spread over a disc, which covers pi/4 of the square grid.
+int hubSlots(std::size_t n);
+
+// wanted: each trunk's axis at the level where the necks meet their skeletons, across the hub (its centre at 0),
+// in any unit; they are scaled so that nine in ten fall within the ports' span. Nearest pairs are taken first.
+HubLayout layOutHub(const std::vector<std::array<double, 2>>& wanted);
+
+}  // namespace arbor
