@@ -351,8 +351,10 @@ TEST_CASE("twigs attached along a long neck leave through it where they attach, 
   MeshOptions off;
   off.neckPorts = false;
   off.fakeDisplaced = false;  // piled as before neck ports, every twig meshed however far from its attachment
-  const TreeMesh piled = buildTreeMesh(s, off), ported = buildTreeMesh(s);
-  for (const TreeMesh* t : {&piled, &ported}) test::checkClosedManifold(t->mesh);
+  MeshOptions ports;
+  ports.fakeDisplaced = false;  // the ports alone: by default a twig whose port lies more than half a radius away is faked
+  const TreeMesh piled = buildTreeMesh(s, off), ported = buildTreeMesh(s, ports), byDefault = buildTreeMesh(s);
+  for (const TreeMesh* t : {&piled, &ported, &byDefault}) test::checkClosedManifold(t->mesh);
   auto offsets = [&](const TreeMesh& t) {
     std::vector<double> out;
     for (const ChildPlacement& c : childPlacements(s, t))
@@ -367,9 +369,13 @@ TEST_CASE("twigs attached along a long neck leave through it where they attach, 
     CHECK(after[k] <= 1.5);  // issue 13's floor, which the first slab (9.1, 5.2 and 1.3 radii) misses
   }
   CHECK(checkSelfIntersections(ported, s).meshMade <= checkSelfIntersections(piled, s).meshMade);  // 0 and 4
+  // By default each twig is meshed within the floor or drawn as a fake branch.
+  const std::vector<double> kept = offsets(byDefault);
+  CHECK(kept.size() + byDefault.fakedStems.size() == 3);
+  for (double offset : kept) CHECK(offset <= 1.5);
 }
 
-TEST_CASE("a twig its parent could join only more than a parent radius from where it attaches is a fake branch", "[graph][mesh]") {
+TEST_CASE("a twig its parent could join only more than half a parent radius from where it attaches is a fake branch", "[graph][mesh]") {
   // The branch of the test above, its twigs piled on its first slab (no neck ports): 9.1, 5.2 and 1.3 branch
   // radii (0.1 m) from their attachments, each twig 0.6 m long; a fourth leaves 2.8 m along, past where the tube
   // begins, on a slab of its own. The three piled ones are drawn as fake branches on their skeletons (a tube from

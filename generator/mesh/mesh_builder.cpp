@@ -34,11 +34,14 @@ constexpr std::uint32_t kUnmade = 0xfffffff0u;  // indices of corners not emitte
 // radii 29,133 mesh-made pairs, 16 radii 31,900, any length 32,663).
 constexpr double kNeckPortsFrom = 12.0;
 // A child attached farther from the neck's line than this many of its parent's radii joins the first slab: the
-// neck is not where its skeleton is (barley's stalks leave their hub along necks 400 radii long).
+// neck is not where its skeleton is (a grass's stalks left their box hub along necks 400 radii long).
 constexpr double kNeckReach = 20.0;
 // A twig (or a twig-bearing branch off a limb) whose connection lies farther along its parent than this many parent
 // radii from its attachment is a fake branch (the joint floor of docs/mesh.md: first rings within 1.5 parent radii).
-constexpr double kFakeFrom = 1.0;
+// Half a radius: its first ring stands off the connection by up to a radius more (at 1, 15 twigs of the Arbaro files
+// at seeds 1-3 ended past 1.5; all trees' mesh-made pairs 5,677 at 1, 5,290 at 0.75, 4,981 at 0.5, and 5,357
+// with 1 kept for neck ports, whose twigs were most of the gain).
+constexpr double kFakeFrom = 0.5;
 
 struct Ring {
   std::array<std::uint32_t, 4> v{};
@@ -410,7 +413,7 @@ class Builder {
     addPortUvw(q, port.tex);
 
     const RingFrame exitFrame = transportFrame(port.frame, directionOr(exitDir + d, exitDir));
-    sLo = tubeStartPast(poly, start, exitCenter);
+    sLo = tubeStartPast(poly, start, exitCenter, sk_.stems[static_cast<std::size_t>(stem)].cloneOf >= 0);
     const auto offsets = ringOffsets(exitFrame, exitRadius * opt_.limitCompensation);
     const std::array<Vec3, 4> exitCorners{exitCenter + offsets[0], exitCenter + offsets[1], exitCenter + offsets[2],
                                           exitCenter + offsets[3]};
@@ -426,7 +429,7 @@ class Builder {
   std::optional<Ring> leaveInsetDirectly(int stem, const StemPolyline& poly, const PortStart& start, const Ring& port,
                                          const std::array<Vec3, 4>& c, const Vec3& normal, double& sLo) {
     const double rc = poly.radius(0.0);
-    double s = tubeStartPast(poly, start, port.center);
+    double s = tubeStartPast(poly, start, port.center, sk_.stems[static_cast<std::size_t>(stem)].cloneOf >= 0);
     double portRadius = 0.0;
     for (const Vec3& corner : c) portRadius += 0.25 * glm::distance(corner, port.center);
     s = clearOfParent(poly, start, port.frame, c, s, 0.25 * std::max(portRadius, rc));
@@ -619,10 +622,13 @@ class Builder {
 
   // Where a child's tube may begin after a first cross section centred at `from`: past it along the skeleton, and
   // (a side child) where the skeleton has left the parent and any grandparent it must clear.
-  double tubeStartPast(const StemPolyline& poly, const PortStart& start, const Vec3& from) const {
+  double tubeStartPast(const StemPolyline& poly, const PortStart& start, const Vec3& from, bool clone) const {
     const double rc = poly.radius(0.0);
     double s = poly.firstBeyond(start.branchPoint, glm::distance(from, start.branchPoint) + 0.5 * rc);
-    if (!start.top) {
+    // A clone leaving a split slab's side needs no clearance from the source's axis, which runs on through the clone
+    // on top: at a split of a few degrees that lay metres up (the willow file's trunk clones split at 3 degrees),
+    // the clone's limbs crowding its first slab there.
+    if (!start.top && !clone) {
       // A child at a small angle runs along its parent; its tube begins where its skeleton has left the parent.
       const double clearance = std::sqrt(0.5) * start.parentReach + rc * opt_.limitCompensation;
       s = std::max(s, poly.firstClearOf(start.branchPoint, start.parentAxis, clearance));
@@ -1163,7 +1169,7 @@ class Builder {
   // where it attaches, inside its grandparent's wood where the parent has no surface, is a fake branch on its
   // skeleton instead: meshed there, its neck ran back through the parent to its skeleton and cut its neighbours. So
   // is a branch bearing only twigs, two or more levels from its trunk (a trunk's own limbs are always meshed).
-  std::vector<int> joinedHere(const Vec3& center, double ra, const std::vector<int>& children) {
+  std::vector<int> joinedHere(const Vec3& center, double ra, const std::vector<int>& children, double fakeFrom) {
     if (!opt_.fakeDisplaced) return children;
     std::vector<int> joined;
     for (const int c : children) {
@@ -1171,7 +1177,7 @@ class Builder {
       const SkeletonNode& at = sk_.nodes[static_cast<std::size_t>(st.attachNode)];
       // Measured along the parent's skeleton, as the joint floor is (a slab's own axis may lean off it).
       const double along = std::abs(glm::dot(center - at.world.position, at.world.direction()));
-      const bool far = along > kFakeFrom * std::max(ra, at.radius) || along > 0.5 * st.length;
+      const bool far = along > fakeFrom * std::max(ra, at.radius) || along > 0.5 * st.length;
       if (far && (!branching_[static_cast<std::size_t>(c)] || (st.level >= 2 && bearsTwigsOnly(c)))) fakeTwig(c);
       else joined.push_back(c);
     }
@@ -1206,7 +1212,7 @@ class Builder {
   }
 
   std::vector<int> joinedHere(const Ring& lo, const Ring& hi, const std::vector<int>& children) {
-    return joinedHere(0.5 * (lo.center + hi.center), std::max(lo.radius, hi.radius), children);
+    return joinedHere(0.5 * (lo.center + hi.center), std::max(lo.radius, hi.radius), children, kFakeFrom);
   }
 
   // Whether the children at `node`, attached before the tube begins, leave through the neck: where the node lies
@@ -1303,7 +1309,7 @@ class Builder {
     Ring prev = a;
     for (const Group& g : groups) {
       const double mid = 0.5 * (g.lo + g.hi) / len;
-      const std::vector<int> joined = joinedHere(a.center + axis * mid, a.radius + (b.radius - a.radius) * mid, g.children);
+      const std::vector<int> joined = joinedHere(a.center + axis * mid, a.radius + (b.radius - a.radius) * mid, g.children, kFakeFrom);
       if (joined.empty()) continue;  // the band from prev runs on over the group's place
       const Ring lo = between(neck.stem, a, b, g.lo / len);
       const Ring hi = between(neck.stem, a, b, g.hi / len);

@@ -22,7 +22,7 @@ struct MeshOptions {
   // attach; off: they crowd the parent's first slab, however far along that is.
   bool neckPorts = true;
   // A twig (no meshed child, nor any of its clones), or a branch two or more levels from its trunk that bears only
-  // twigs, that its parent can join only more than a parent radius (or half its own length) along from where it
+  // twigs, that its parent can join only more than half a parent radius (or half its own length) along from where it
   // attaches (where the parent has no tube yet, inside or against its own parent) is drawn, with its clones and
   // twigs, as fake branches on its skeleton (TreeMesh::fakedStems), as is a twig whose wood never clears its
   // parent's; off: meshed from that far slab, however far it is.

@@ -175,7 +175,7 @@ void addCheckCommand(CLI::App& app, Action& action) {
       ->check(Whole(0, 1000000000));
   cmd->add_option("--json", o->json, "Write the counts and every pair to this JSON file");
   cmd->add_flag("--mesh-displaced", o->meshDisplaced,
-                "Mesh the twigs (and twig-bearing branches) their parent could join only more than a parent radius from where they attach (default: fake branches)");
+                "Mesh the twigs (and twig-bearing branches) their parent could join only more than half a parent radius from where they attach (default: fake branches)");
   cmd->callback([o, &action] { action = [o] { return runCheck(*o); }; });
 }
 
