@@ -1476,7 +1476,8 @@ class Builder {
           const double x = -half + i * cell, y = -half + j * cell;
           const auto at = static_cast<std::size_t>(j * (cells + 1) + i);
           v[at] = addVertex(origin + frame.N * x + frame.B * y + kUp * z, 1.5 * rho, 0, kUp);
-          addHubUvw(v[at], x, y, tex);
+          // v runs outwards from the centre, as bark spreads over a root flare (constant, it streaked the pad).
+          addHubUvw(v[at], x, y, tex + barkTextureAdvance(std::hypot(x, y), rho));
         }
       }
       return v;
@@ -1518,7 +1519,7 @@ class Builder {
       const auto [i, j] = layout.cell[t];
       PortStart p{{at(top, i, j), at(top, i + 1, j), at(top, i + 1, j + 1), at(top, i, j + 1)}, origin, true, kUp, 0.0};
       p.slabReach = half;
-      p.tex = texTop;
+      p.tex = portTex(p.port);
       p.tubeAt = arcs[t];
       children.emplace_back(trunks[t], p);
     }
