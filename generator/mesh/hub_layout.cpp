@@ -9,6 +9,14 @@ namespace arbor {
 
 int hubSlots(std::size_t n) { return std::max(2, static_cast<int>(std::ceil(std::sqrt(4.0 / std::numbers::pi * static_cast<double>(n))))); }
 
+double hubSpread(const std::vector<std::array<double, 2>>& points) {
+  if (points.empty()) return 0.0;
+  std::vector<double> radii;
+  for (const auto& p : points) radii.push_back(std::max(std::abs(p[0]), std::abs(p[1])));
+  std::sort(radii.begin(), radii.end());
+  return radii[std::min(radii.size() - 1, static_cast<std::size_t>(0.9 * static_cast<double>(radii.size())))];
+}
+
 namespace {
 
 // Strictly increasing slots (0..slots-1) for values sorted ascending, nearest to them in the least-squares sense:
@@ -51,10 +59,7 @@ HubLayout layOutHub(const std::vector<std::array<double, 2>>& wanted) {
   out.cell.assign(wanted.size(), {-1, -1});
   if (wanted.empty()) return out;
   // Nine in ten within the ports' span: the few widest-leaning trunks take the rim instead of spreading the rest.
-  std::vector<double> radii;
-  for (const auto& w : wanted) radii.push_back(std::max(std::abs(w[0]), std::abs(w[1])));
-  std::sort(radii.begin(), radii.end());
-  const double r90 = radii[std::min(radii.size() - 1, static_cast<std::size_t>(0.9 * static_cast<double>(radii.size())))];
+  const double r90 = hubSpread(wanted);
   const double half = 0.5 * (out.slots - 1);
   const double scale = r90 > 0.0 ? half / r90 : 0.0;
   // Columns by x, then rows by y within each column: both orders kept, as far as a grid can keep them.

@@ -67,8 +67,8 @@ struct PortStart {
   // Texture v at the port, read from the parent's cross sections when the port is made: a sibling's neck adding
   // to a shared corner later does not change it, so no child's texture depends on the order its siblings are built.
   double tex = 0.0;
-  // A trunk leaving a wide hub (buildGridHub): its neck runs straight from the port to its skeleton at this arc
-  // length, where its tube begins (-1: any other port).
+  // A trunk leaving a wide hub (buildGridHub): its neck runs from the port to its skeleton at this arc length,
+  // where its tube begins (-1: any other port).
   double tubeAt = -1.0;
 };
 
@@ -268,6 +268,13 @@ class Builder {
     return tex;
   }
 
+  // How far a port's corners stand from its centre, on average: its size as a cross section's corners are.
+  double meanCornerDistance(const std::array<std::uint32_t, 4>& q, const Vec3& center) const {
+    double d = 0.0;
+    for (std::uint32_t v : q) d += 0.25 * glm::distance(position(v), center);
+    return d;
+  }
+
   Vec3 faceNormal(const std::array<std::uint32_t, 4>& q) const {
     const Vec3 n = glm::cross(position(q[2]) - position(q[0]), position(q[3]) - position(q[1]));
     return glm::normalize(n);
@@ -334,8 +341,7 @@ class Builder {
     Ring port = portRing(q);
     const Vec3 center = port.center;
     const Vec3 normal = faceNormal(q);
-    double portRadius = 0.0;
-    for (std::uint32_t v : q) portRadius += 0.25 * glm::distance(position(v), center);
+    const double portRadius = meanCornerDistance(q, center);
     port.tex = start.tex;
 
     const Vec3 d = poly.startDirection();
@@ -413,7 +419,7 @@ class Builder {
     addPortUvw(q, port.tex);
 
     const RingFrame exitFrame = transportFrame(port.frame, directionOr(exitDir + d, exitDir));
-    sLo = tubeStartPast(poly, start, exitCenter, sk_.stems[static_cast<std::size_t>(stem)].cloneOf >= 0);
+    sLo = tubeStartPast(stem, poly, start, exitCenter);
     const auto offsets = ringOffsets(exitFrame, exitRadius * opt_.limitCompensation);
     const std::array<Vec3, 4> exitCorners{exitCenter + offsets[0], exitCenter + offsets[1], exitCenter + offsets[2],
                                           exitCenter + offsets[3]};
@@ -429,7 +435,7 @@ class Builder {
   std::optional<Ring> leaveInsetDirectly(int stem, const StemPolyline& poly, const PortStart& start, const Ring& port,
                                          const std::array<Vec3, 4>& c, const Vec3& normal, double& sLo) {
     const double rc = poly.radius(0.0);
-    double s = tubeStartPast(poly, start, port.center, sk_.stems[static_cast<std::size_t>(stem)].cloneOf >= 0);
+    double s = tubeStartPast(stem, poly, start, port.center);
     double portRadius = 0.0;
     for (const Vec3& corner : c) portRadius += 0.25 * glm::distance(corner, port.center);
     s = clearOfParent(poly, start, port.frame, c, s, 0.25 * std::max(portRadius, rc));
@@ -622,13 +628,13 @@ class Builder {
 
   // Where a child's tube may begin after a first cross section centred at `from`: past it along the skeleton, and
   // (a side child) where the skeleton has left the parent and any grandparent it must clear.
-  double tubeStartPast(const StemPolyline& poly, const PortStart& start, const Vec3& from, bool clone) const {
+  double tubeStartPast(int stem, const StemPolyline& poly, const PortStart& start, const Vec3& from) const {
     const double rc = poly.radius(0.0);
     double s = poly.firstBeyond(start.branchPoint, glm::distance(from, start.branchPoint) + 0.5 * rc);
     // A clone leaving a split slab's side needs no clearance from the source's axis, which runs on through the clone
     // on top: at a split of a few degrees that lay metres up (the willow file's trunk clones split at 3 degrees),
     // the clone's limbs crowding its first slab there.
-    if (!start.top && !clone) {
+    if (!start.top && sk_.stems[static_cast<std::size_t>(stem)].cloneOf < 0) {
       // A child at a small angle runs along its parent; its tube begins where its skeleton has left the parent.
       const double clearance = std::sqrt(0.5) * start.parentReach + rc * opt_.limitCompensation;
       s = std::max(s, poly.firstClearOf(start.branchPoint, start.parentAxis, clearance));
@@ -1169,7 +1175,7 @@ class Builder {
   // where it attaches, inside its grandparent's wood where the parent has no surface, is a fake branch on its
   // skeleton instead: meshed there, its neck ran back through the parent to its skeleton and cut its neighbours. So
   // is a branch bearing only twigs, two or more levels from its trunk (a trunk's own limbs are always meshed).
-  std::vector<int> joinedHere(const Vec3& center, double ra, const std::vector<int>& children, double fakeFrom) {
+  std::vector<int> joinedHere(const Vec3& center, double ra, const std::vector<int>& children) {
     if (!opt_.fakeDisplaced) return children;
     std::vector<int> joined;
     for (const int c : children) {
@@ -1177,7 +1183,7 @@ class Builder {
       const SkeletonNode& at = sk_.nodes[static_cast<std::size_t>(st.attachNode)];
       // Measured along the parent's skeleton, as the joint floor is (a slab's own axis may lean off it).
       const double along = std::abs(glm::dot(center - at.world.position, at.world.direction()));
-      const bool far = along > fakeFrom * std::max(ra, at.radius) || along > 0.5 * st.length;
+      const bool far = along > kFakeFrom * std::max(ra, at.radius) || along > 0.5 * st.length;
       if (far && (!branching_[static_cast<std::size_t>(c)] || (st.level >= 2 && bearsTwigsOnly(c)))) fakeTwig(c);
       else joined.push_back(c);
     }
@@ -1212,7 +1218,7 @@ class Builder {
   }
 
   std::vector<int> joinedHere(const Ring& lo, const Ring& hi, const std::vector<int>& children) {
-    return joinedHere(0.5 * (lo.center + hi.center), std::max(lo.radius, hi.radius), children, kFakeFrom);
+    return joinedHere(0.5 * (lo.center + hi.center), std::max(lo.radius, hi.radius), children);
   }
 
   // Whether the children at `node`, attached before the tube begins, leave through the neck: where the node lies
@@ -1309,7 +1315,7 @@ class Builder {
     Ring prev = a;
     for (const Group& g : groups) {
       const double mid = 0.5 * (g.lo + g.hi) / len;
-      const std::vector<int> joined = joinedHere(a.center + axis * mid, a.radius + (b.radius - a.radius) * mid, g.children, kFakeFrom);
+      const std::vector<int> joined = joinedHere(a.center + axis * mid, a.radius + (b.radius - a.radius) * mid, g.children);
       if (joined.empty()) continue;  // the band from prev runs on over the group's place
       const Ring lo = between(neck.stem, a, b, g.lo / len);
       const Ring hi = between(neck.stem, a, b, g.hi / len);
@@ -1365,8 +1371,7 @@ class Builder {
   void subBox(int parentStem, int node, const std::array<std::uint32_t, 4>& q, const std::vector<int>& children) {
     const Vec3 center = faceCenter(q);
     const Vec3 n = faceNormal(q);
-    double rho = 0.0;
-    for (std::uint32_t v : q) rho += 0.25 * glm::distance(position(v), center);
+    const double rho = meanCornerDistance(q, center);
     Ring port = portRing(q);
     port.tex = portTex(q);
     const RingFrame frame = transportFrame(port.frame, n);
@@ -1420,8 +1425,8 @@ class Builder {
   }
 
   // Many trunks from one root (a grass's tuft): a flat hub whose top is a grid of cells, each trunk leaving its
-  // own port cell, laid out as its axis lies where the necks meet the skeletons, and running straight from there
-  // to its skeleton. False where a trunk's skeleton never rises that far (the box hub is built instead).
+  // own port cell, laid out as its axis lies where the necks meet the skeletons, its neck curving from there to
+  // its skeleton (leaveHub). False where a trunk's skeleton never rises that far (the box hub is built instead).
   bool buildGridHub(const std::vector<int>& trunks) {
     const double rho = widestStart(trunks);
     if (!(rho > 0.0)) return false;  // no width to lay cells out by
@@ -1445,16 +1450,13 @@ class Builder {
     std::vector<std::array<double, 2>> wanted(trunks.size());
     std::vector<double> arcs(trunks.size());
     auto spreadAt = [&](double level) {
-      std::vector<double> r;
       for (std::size_t i = 0; i < polys.size(); ++i) {
         arcs[i] = arcAtLevel(polys[i], origin, kUp, level);
         if (arcs[i] < 0.0 || arcs[i] > 0.5 * polys[i].length()) return -1.0;
         const Vec3 d = polys[i].position(arcs[i]) - origin;
         wanted[i] = {glm::dot(d, frame.N), glm::dot(d, frame.B)};
-        r.push_back(std::max(std::abs(wanted[i][0]), std::abs(wanted[i][1])));
       }
-      std::sort(r.begin(), r.end());
-      return r[std::min(r.size() - 1, static_cast<std::size_t>(0.9 * static_cast<double>(r.size())))];
+      return hubSpread(wanted);
     };
     const double lowest = height + 4.0 * rho, highest = std::max(lowest, 0.25 * shortest);
     double level = height + span;
@@ -1537,9 +1539,7 @@ class Builder {
     inset_.reset();
     Ring last = portRing(start.port);
     last.tex = start.tex;
-    double portRadius = 0.0;
-    for (std::uint32_t v : start.port) portRadius += 0.25 * glm::distance(position(v), last.center);
-    portRadius /= opt_.limitCompensation;
+    const double portRadius = meanCornerDistance(start.port, last.center) / opt_.limitCompensation;
     addPortUvw(start.port, last.tex);
     const double s = start.tubeAt;
     const Vec3 from = last.center, to = poly.position(s);
