@@ -692,7 +692,7 @@ TEST_CASE("OBJ of an asset: cards as objects after the surface, read back as the
   writeObjCards(asset.leaves, "leaves", "leaves", counts, out);
   const std::string text = out.str();
   std::ostringstream once;
-  writeObjAsset(bark, impostorSegments(skeleton, asset.lods[0].meshedLevels), skeleton.leaves, false, once, Up::Y, "palm.mtl");
+  writeObjAsset(bark, leftOutSegments(skeleton, asset.lods[0].meshedLevels, asset.lods[0].fakedStems), skeleton.leaves, false, once, Up::Y, "palm.mtl");
   CHECK(once.str() == text);  // one pass over all three parts writes what the three calls write
   // Leaves of every kind, mixed, and kinds past the atlas's four (drawn as the last): the texture coordinates
   // of the cards made while printing are numbered as writeObjCards numbers leafCards' (kinds share corners).
@@ -786,14 +786,14 @@ TEST_CASE("OBJ of an asset in one pass: the same text as its parts in turn, over
     ObjCounts counts{bark.vertexCount(), bark.vertexCount(), bark.vertexCount()};
     writeObjCards(asset.lods[0].branchCards, "branch_cards", "", counts, parts, Up::Z);
     writeObjCards(asset.leaves, "leaves", "", counts, parts, Up::Z);
-    writeObjAsset(bark, impostorSegments(skeleton, asset.lods[0].meshedLevels), skeleton.leaves, triangles, once, Up::Z, "");
+    writeObjAsset(bark, leftOutSegments(skeleton, asset.lods[0].meshedLevels, asset.lods[0].fakedStems), skeleton.leaves, triangles, once, Up::Z, "");
     CHECK(once.str() == parts.str());
     CHECK(once.str().find("usemtl") == std::string::npos);
   }
   // Every card corner reads back as its own texture coordinate and normal through the shared vt and vn lines
   // (tens of thousands of distinct leaf normals: the dedup table grows many times).
   std::ostringstream file;
-  writeObjAsset(bark, impostorSegments(skeleton, asset.lods[0].meshedLevels), skeleton.leaves, false, file, Up::Z, "");  // the tree's own axes
+  writeObjAsset(bark, leftOutSegments(skeleton, asset.lods[0].meshedLevels, asset.lods[0].fakedStems), skeleton.leaves, false, file, Up::Z, "");  // the tree's own axes
   std::vector<glm::vec2> vt;
   std::vector<glm::vec3> vn;
   std::vector<std::array<std::uint64_t, 12>> faces;  // v/vt/vn of the four corners

@@ -64,8 +64,7 @@ TEST_CASE("a forest instances its distinct trees, culls whole trees and fakes mo
   CHECK(forest.placements().size() == 30);
   CHECK(forest.gpuTrees().size() == 2 * render::kDetailLevels);
   const auto& details = forest.trees()[0].detail;
-  CHECK(details[0].impostorCount == 0);
-  CHECK(details[1].impostorCount > 0);
+  CHECK(details[1].impostorCount > details[0].impostorCount);  // near: only the few fronds the mesh fakes
   CHECK(details[1].patchCount < details[0].patchCount);
   CHECK(details[2].patchCount <= details[1].patchCount);  // the palm has two levels: the trunk stays
 

@@ -1,5 +1,5 @@
 // A tree no Weber-Penn species makes, given as a branch graph: a whorl of six branches at one node, a branch
-// running almost along the trunk, one leaving backwards and a fork of three at a branch's end, with leaves:
+// running almost along the trunk (a fake branch unless every stem is meshed), one leaving backwards and a fork of three at a branch's end, with leaves:
 // one closed mesh, tessellated with ACC on lavapipe, against its golden image.
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -68,6 +68,14 @@ TEST_CASE("golden image: a branch graph with a whorl of six, a near-parallel and
   CHECK(topology.boundaryEdges == 0);
   CHECK(topology.nonManifoldEdges == 0);
   CHECK(topology.components == 1);
+  // The branch along the trunk is thin and shallow, so a fake branch by default: meshed on request, it stays closed.
+  CHECK(tree.mesh.fakedStems.size() == 1);
+  BuildOptions meshAll;
+  meshAll.mesh.fakeDisplaced = false;
+  const TreeGeometry meshed = buildTree(skeleton, meshAll);
+  CHECK(meshed.mesh.fakedStems.empty());
+  const MeshTopologyReport all = checkTopology(meshed.mesh.mesh);
+  CHECK((all.boundaryEdges == 0 && all.nonManifoldEdges == 0 && all.components == 1));
   render::RenderSession session(test::vulkan(), 240, 240, VK_SAMPLE_COUNT_1_BIT, test::textures());
   session.setTree(tree.mesh.mesh, tree.patches, skeleton.leaves, tree.impostors);
   const VkExtent2D e = session.extent();

@@ -53,6 +53,13 @@ std::vector<ImpostorSegment> stemSegments(const Skeleton& skeleton, const std::v
   return segments;
 }
 
+std::vector<ImpostorSegment> leftOutSegments(const Skeleton& skeleton, int fromLevel, const std::vector<int>& fakedStems) {
+  std::vector<ImpostorSegment> segments = impostorSegments(skeleton, fromLevel);
+  const std::vector<ImpostorSegment> faked = stemSegments(skeleton, fakedStems);
+  segments.insert(segments.end(), faked.begin(), faked.end());
+  return segments;
+}
+
 std::vector<ImpostorSegment> sketchSegments(const Skeleton& skeleton, int fromLevel, int belowLevel) {
   std::vector<ImpostorSegment> segments;
   for (const SkeletonStem& stem : skeleton.stems) {

@@ -23,6 +23,9 @@ std::vector<ImpostorSegment> impostorSegments(const Skeleton& skeleton, int from
 // Segments of the listed stems only, each from its attach node (the children TreeMesh::fakedStems lists).
 std::vector<ImpostorSegment> stemSegments(const Skeleton& skeleton, const std::vector<int>& stems);
 
+// Every stem the mesh left out: those of `fromLevel` and deeper (stubs at any level), then the listed faked stems.
+std::vector<ImpostorSegment> leftOutSegments(const Skeleton& skeleton, int fromLevel, const std::vector<int>& fakedStems);
+
 // A sketch of the stems of levels [fromLevel, belowLevel) for trees far away: one segment per stem segment,
 // joint to joint (the nodes around branch points left out): the tupelo's is a quarter of impostorSegments'.
 std::vector<ImpostorSegment> sketchSegments(const Skeleton& skeleton, int fromLevel, int belowLevel);

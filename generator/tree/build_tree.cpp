@@ -9,9 +9,7 @@ TreeGeometry buildTree(const Skeleton& skeleton, const BuildOptions& options) {
   mesh.levels = meshLevels < skeleton.levels ? meshLevels : 0;
   g.mesh = buildTreeMesh(skeleton, mesh);
   // Stubs are fake branches at every level, also when every level is meshed (they had gone undrawn then).
-  g.impostors = impostorSegments(skeleton, mesh.levels > 0 ? meshLevels : skeleton.levels);
-  const std::vector<ImpostorSegment> faked = stemSegments(skeleton, g.mesh.fakedStems);  // children the mesh left out
-  g.impostors.insert(g.impostors.end(), faked.begin(), faked.end());
+  g.impostors = leftOutSegments(skeleton, mesh.levels > 0 ? meshLevels : skeleton.levels, g.mesh.fakedStems);
   if (mesh.levels > 0) g.sketch = sketchSegments(skeleton, meshLevels, skeleton.levels - 1);
   if (options.patches) g.patches = buildPatches(g.mesh.mesh);
   if (options.wind) g.wind = treeWind(skeleton, g.mesh, g.impostors, g.sketch);

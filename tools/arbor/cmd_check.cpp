@@ -79,7 +79,7 @@ void printSummary(const Checked& c, const SelfIntersectionReport& r) {
   if (r.classified) {
     std::printf("  neck crossings      %zu  (a child against its own parent, a clone against its source)\n", r.neckCrossings);
     if (!c.tree.fakedStems.empty()) {
-      std::printf("  faked stems         %zu  (twigs joined only far from where they attach or inside their parent, with their clones: fake branches, not checked; --mesh-displaced meshes them)\n",
+      std::printf("  faked stems         %zu  (twigs joined only far from where they attach, inside their parent or shallow along it, with their clones: fake branches, not checked; --mesh-displaced meshes them)\n",
                   c.tree.fakedStems.size());
     }
     // Where the mesher's crossings are, by how the two stems relate and their levels: what to fix first.
@@ -175,7 +175,7 @@ void addCheckCommand(CLI::App& app, Action& action) {
       ->check(Whole(0, 1000000000));
   cmd->add_option("--json", o->json, "Write the counts and every pair to this JSON file");
   cmd->add_flag("--mesh-displaced", o->meshDisplaced,
-                "Mesh the twigs (and twig-bearing branches) their parent could join only more than half a parent radius from where they attach (default: fake branches)");
+                kMeshDisplacedHelp);
   cmd->callback([o, &action] { action = [o] { return runCheck(*o); }; });
 }
 

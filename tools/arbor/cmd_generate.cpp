@@ -142,7 +142,7 @@ int runGenerate(const GenerateOptions& o) {
     std::printf("  mesh             %zu quads, %zu vertices in %.1f ms; %zu joints\n", tree.mesh.quads.size(),
                 tree.mesh.vertexCount(), meshMs, tree.joints.size());
     if (!tree.fakedStems.empty()) {
-      std::printf("  faked stems      %zu (twigs the mesh could join only more than half a parent radius from where they attach, or inside their parent, with their clones: fake branches)\n",
+      std::printf("  faked stems      %zu (twigs the mesh could join only more than half a parent radius from where they attach, inside their parent or shallow along it, with their clones: fake branches)\n",
                   tree.fakedStems.size());
     }
     std::printf("  topology         %s, %zu piece(s), Euler characteristic %d, valence %d..%d\n",
@@ -189,8 +189,7 @@ void addOptions(CLI::App* cmd, GenerateOptions& o, const char* input) {
       ->check(Whole(0, 8));
   cmd->add_flag("--open-base", o.mesh.openBase, "Leave the ring at the trunk base open (closed by default)");
   cmd->add_flag_callback("--mesh-displaced", [&o] { o.mesh.fakeDisplaced = false; },
-                         "Mesh the twigs (and twig-bearing branches) their parent could join only more than half a parent radius from where they attach, from "
-                         "that far slab (default: fake branches on their skeletons, as stubs)");
+                         kMeshDisplacedHelp);
   addExportOptions(cmd, o.exported);
   cmd->add_option("--subdivide", o.subdivide, "Export the bark mesh (every level of detail) after N Catmull-Clark levels (OpenSubdiv)")
       ->check(Whole(0, 6));

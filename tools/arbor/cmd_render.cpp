@@ -204,7 +204,7 @@ void addRenderCommand(CLI::App& app, Action& action) {
   cmd->add_flag("--wireframe", o->wireframe, "Outline the tessellated triangles");
   cmd->add_flag("--no-ground", o->noGround, "Leave out the ground");
   cmd->add_flag("--mesh-displaced", o->meshDisplaced,
-                "Mesh the twigs (and twig-bearing branches) their parent could join only more than half a parent radius from where they attach (default: fake branches)");
+                kMeshDisplacedHelp);
   cmd->add_flag("--leaves", o->leaves, "Draw the leaves (textured quads from the leaf atlas, back-lit, self-shadowed)");
   cmd->add_option("--leaf-density", o->leafDensity, "Share of the leaves drawn, 0 to 1")->check(Number(0.0f, 1.0f))->capture_default_str();
   cmd->add_option("--leaf-lod", o->leafLod, "All leaves up to this distance in metres, then fewer with distance squared (0: all)")

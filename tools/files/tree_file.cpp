@@ -76,11 +76,8 @@ void writeTreeFile(const std::string& path, const Skeleton& skeleton, const std:
   const std::vector<Leaf> noLeaves;
   const std::vector<Leaf>& leaves = options.asset.leaves ? skeleton.leaves : noLeaves;
   // Stubs are never meshed, so their cards are there whatever the levels (wheat's grains).
-  std::vector<ImpostorSegment> segments = options.asset.branchCards ? impostorSegments(skeleton, lod.meshedLevels) : std::vector<ImpostorSegment>{};
-  if (options.asset.branchCards) {  // and the children the mesh left out
-    const std::vector<ImpostorSegment> faked = stemSegments(skeleton, lod.fakedStems);
-    segments.insert(segments.end(), faked.begin(), faked.end());
-  }
+  const std::vector<ImpostorSegment> segments =
+      options.asset.branchCards ? leftOutSegments(skeleton, lod.meshedLevels, lod.fakedStems) : std::vector<ImpostorSegment>{};
   writeFileAtomically(path, [&](std::ostream& out) { writeObjAsset(*lod.bark, segments, leaves, options.file.triangles, out, options.file.up, mtl); });
 }
 
