@@ -13,6 +13,7 @@
 #include "mesh/impostor_segments.hpp"
 #include "mesh/mesh_checks.hpp"
 #include "mesh/self_intersection.hpp"
+#include "mesh/stem_capsules.hpp"
 #include "manifold_checks.hpp"
 #include "mesh/tree_mesh.hpp"
 #include "patches/limit_reference.hpp"
@@ -488,4 +489,42 @@ TEST_CASE("a short stem's split slab moves on until the band to it runs forwards
   // 217 of 2,050 when the slab stopped after two radii; then 108 (twigs piled on their parent's first slab, the
   // collar far along the parent, where no point on the skeleton lies ahead of it); none since those are faked.
   CHECK(backwards == 0);
+}
+
+TEST_CASE("twigs shallow and thin along their parent, or just before its split, are fake branches unless every stem is meshed", "[mesh][real-data]") {
+  const std::vector<std::string> files = test::arbaroSpeciesFiles(ARBOR_SPECIES_DIR);
+  if (files.empty()) return;  // arbaroSpeciesFiles said why
+  // Barley's awns leave their stalks at a few degrees; the CA black oak's twigs crowd its many splits.
+  for (const char* name : {"barley", "ca_black_oak"}) {
+    INFO(name);
+    const Skeleton s = grow(loadSpeciesFile(std::string(ARBOR_SPECIES_DIR) + "/" + name + ".xml"), 1);
+    const TreeMesh tree = buildTreeMesh(s);
+    const std::set<int> faked(tree.fakedStems.begin(), tree.fakedStems.end());
+    std::vector<bool> bears(s.stems.size(), false);  // a stem with a child, or one of whose clones has one
+    for (const SkeletonStem& st : s.stems)
+      for (int x = st.cloneOf < 0 && !st.stub ? st.parentStem : -1; x >= 0; x = s.stems[static_cast<std::size_t>(x)].cloneOf) bears[static_cast<std::size_t>(x)] = true;
+    std::size_t shallow = 0, beforeSplit = 0;
+    for (std::size_t i = 0; i < s.stems.size(); ++i) {
+      const SkeletonStem& st = s.stems[i];
+      if (st.parentStem < 0 || st.cloneOf >= 0 || st.stub || bears[i]) continue;
+      const SkeletonNode& at = s.nodes[static_cast<std::size_t>(st.attachNode)];
+      bool split = false;
+      for (const SkeletonStem& c : s.stems) {
+        if (c.cloneOf != st.parentStem || c.stub) continue;
+        const double ahead = s.nodes[static_cast<std::size_t>(c.attachNode)].offset - at.offset;
+        split = split || (ahead >= 0.0 && ahead <= 4.0 * at.radius);
+      }
+      const bool thinShallow = parentClearance(s, static_cast<int>(i)) >= 6.0 * at.radius && st.startRadius <= 0.5 * at.radius;
+      shallow += thinShallow ? 1 : 0;
+      beforeSplit += split ? 1 : 0;
+      if (thinShallow || split) CHECK(faked.count(static_cast<int>(i)) == 1);
+    }
+    CHECK(shallow + beforeSplit > 20);
+    MeshOptions all;
+    all.fakeDisplaced = false;
+    const TreeMesh meshed = buildTreeMesh(s, all);
+    CHECK(meshed.fakedStems.empty());
+    const MeshTopologyReport r = checkTopology(meshed.mesh);
+    CHECK((r.boundaryEdges == 0 && r.nonManifoldEdges == 0 && r.components == 1));
+  }
 }
