@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "stem_polyline.hpp"
 
@@ -36,11 +37,14 @@ StemRings stemRings(const Skeleton& skeleton, const TreeMesh& tree) {
 std::vector<ChildPlacement> childPlacements(const Skeleton& skeleton, const TreeMesh& tree) {
   const StemRings rings = stemRings(skeleton, tree);
   std::vector<ChildPlacement> out;
+  std::optional<StemPolyline> parentLine;  // a parent's children are mostly in a row: its polyline made once for them
+  int lineOf = -1;
   for (std::size_t c = 0; c < skeleton.stems.size(); ++c) {
     const SkeletonStem& st = skeleton.stems[c];
     if (st.parentStem < 0 || st.cloneOf >= 0 || rings.first[c] < 0) continue;
     // Rings of the parent's own sub-boxes carry the parent's stem id; the child's first ring is its own.
-    const StemPolyline parent(skeleton, st.parentStem);
+    if (lineOf != st.parentStem) parentLine.emplace(skeleton, lineOf = st.parentStem);
+    const StemPolyline& parent = *parentLine;
     double s = -1.0;
     for (int i = 0; i < parent.pointCount(); ++i) {
       if (parent.node(i) == st.attachNode) s = parent.arcLength(i);

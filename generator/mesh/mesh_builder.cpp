@@ -4,6 +4,7 @@
 // closed mesh without a single branch cylinder stuck inside another.
 #include <algorithm>
 #include <functional>
+#include <iterator>
 #include <cmath>
 #include <memory>
 #include <numbers>
@@ -17,6 +18,7 @@
 #include "edge_plane.hpp"
 #include "face_grid.hpp"
 #include "hub_layout.hpp"
+#include "joint_checks.hpp"
 #include "mesh_attributes.hpp"
 #include "mesh_checks.hpp"
 #include "quad_contact.hpp"
@@ -51,6 +53,10 @@ constexpr double kThinTwig = 0.5;
 // split slab's sides ran over it (all trees' mesh-made pairs at seeds 1-3 3,486 -> 2,965, none worse; the CA black
 // oak file 676 -> 421, at 2 radii 531, at 6 411; faking only the twigs on a clone's side, 489).
 constexpr double kBeforeSplit = 4.0;
+// The joint floor (docs/mesh.md): a child's first ring at most this many parent radii along from its attachment.
+constexpr double kFarChild = 1.5;
+// Passes of faking the twigs an earlier pass left past kFarChild.
+constexpr int kFarTwigPasses = 3;
 
 struct Ring {
   std::array<std::uint32_t, 4> v{};
@@ -83,7 +89,8 @@ struct PortStart {
 
 class Builder {
  public:
-  Builder(const Skeleton& s, const MeshOptions& o, TreeMesh& out) : sk_(s), opt_(o), out_(out) {}
+  // `fake`: stems to draw as fake branches whatever the rules say (the far twigs of an earlier pass).
+  Builder(const Skeleton& s, const MeshOptions& o, TreeMesh& out, const std::vector<int>& fake) : sk_(s), opt_(o), out_(out), fake_(fake) {}
 
   void run() {
     const std::size_t vertices = out_.mesh.positions.capacity();
@@ -110,7 +117,7 @@ class Builder {
     for (std::size_t i = 0; i < sk_.stems.size(); ++i) {
       const SkeletonStem& st = sk_.stems[i];
       if (!meshed(static_cast<int>(i))) continue;
-      if (unjoinableTwig(static_cast<int>(i))) {
+      if (unjoinableTwig(static_cast<int>(i)) || std::binary_search(fake_.begin(), fake_.end(), static_cast<int>(i))) {
         fakeTwig(static_cast<int>(i));
         continue;
       }
@@ -132,6 +139,7 @@ class Builder {
   std::vector<bool> branching_;            // per stem: whether it or a clone after it has a meshed child (not a twig)
   std::vector<std::vector<int>> clones_;   // per stem: its meshed clones
   std::vector<std::vector<int>> children_; // per stem: its meshed children (not clones)
+  const std::vector<int>& fake_;            // sorted: stems faked whatever the rules say
   std::vector<bool> faked_;                // per stem: in out_.fakedStems
   std::vector<Vec3> uvwSum_;
   std::vector<int> uvwCount_;
@@ -1199,6 +1207,24 @@ class Builder {
     return joined;
   }
 
+ public:
+  // The twigs (and twig-bearing branches off limbs) whose first ring this pass placed more than 1.5 parent radii
+  // along their parent from where they attach (the joint floor), sorted: a neck port or a crowded sub-box can leave
+  // one there although its connection lay within kFakeFrom.
+  std::vector<int> farTwigs() const {
+    std::vector<int> far;
+    if (!opt_.fakeDisplaced) return far;
+    for (const ChildPlacement& c : childPlacements(sk_, out_)) {
+      const auto i = static_cast<std::size_t>(c.stem);
+      const SkeletonStem& st = sk_.stems[i];
+      if (c.offset > kFarChild && (!branching_[i] || (st.level >= 2 && bearsTwigsOnly(c.stem)))) far.push_back(c.stem);
+    }
+    std::sort(far.begin(), far.end());
+    return far;
+  }
+
+ private:
+
   // A twig the mesh cannot join where it attaches is a fake branch with its clones, as a stub ending inside is:
   // - its wood does not clear its parent's before it ends or splits (it leaves at a few degrees): its tube would
   //   begin past its tip, or its split slab lie in its parent's side;
@@ -1602,7 +1628,9 @@ class Builder {
 
 }  // namespace
 
-TreeMesh buildTreeMesh(const Skeleton& skeleton, const MeshOptions& options) {
+namespace {
+
+TreeMesh buildOnce(const Skeleton& skeleton, const MeshOptions& options, const std::vector<int>& fake, std::vector<int>* farTwigs) {
   TreeMesh out;
   // About five quads (and as many vertices) per skeleton node; growing these vectors would cost page faults.
   const std::size_t vertices = std::min(skeleton.nodes.size() * 6, options.maxQuads + 8);
@@ -1613,7 +1641,9 @@ TreeMesh buildTreeMesh(const Skeleton& skeleton, const MeshOptions& options) {
   out.mesh.quads.reserve(vertices);
   out.quadStem.reserve(vertices);
   out.rings.reserve(vertices / 4);
-  Builder(skeleton, options, out).run();
+  Builder builder(skeleton, options, out, fake);
+  builder.run();
+  if (farTwigs) *farTwigs = builder.farTwigs();
   // Degenerate geometry must never leave here as NaN vertices (exports and the GPU would take them silently).
   for (const glm::vec3& p : out.mesh.positions) {
     if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {
@@ -1621,6 +1651,21 @@ TreeMesh buildTreeMesh(const Skeleton& skeleton, const MeshOptions& options) {
     }
   }
   return out;
+}
+
+}  // namespace
+
+TreeMesh buildTreeMesh(const Skeleton& skeleton, const MeshOptions& options) {
+  // A twig the first pass left past the joint floor is a fake branch, and the tree meshed again without it: its
+  // neighbours' connections change, so a few passes, each faking more (at most 1 to 3 twigs a tree, measured).
+  std::vector<int> fake, far;
+  for (int pass = 0;; ++pass) {
+    TreeMesh out = buildOnce(skeleton, options, fake, pass < kFarTwigPasses ? &far : nullptr);
+    if (pass == kFarTwigPasses || far.empty()) return out;
+    std::vector<int> more;
+    std::set_union(fake.begin(), fake.end(), far.begin(), far.end(), std::back_inserter(more));
+    fake = std::move(more);
+  }
 }
 
 }  // namespace arbor
