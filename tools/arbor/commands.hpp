@@ -13,9 +13,9 @@ constexpr int kExitBadInput = 2;
 
 // --mesh-displaced (generate, render, check): what MeshOptions::fakeDisplaced draws as fake branches, meshed instead.
 constexpr const char* kMeshDisplacedHelp =
-    "Mesh the twigs (and twig-bearing branches) their parent could join only more than half a parent radius from where "
-    "they attach, from that far slab, and the thin twigs inside or shallow along their parent (default: fake branches "
-    "on their skeletons, as stubs)";
+    "Mesh the twigs (and twig-bearing branches) the mesh could not join near where they attach: those their parent "
+    "could join only more than half a parent radius along (meshed from that far slab), thin twigs inside or shallow "
+    "along their parent, twigs just before their parent splits (default: fake branches on their skeletons, as stubs)";
 
 void addGenerateCommand(CLI::App& app, Action& action);
 void addMeshCommand(CLI::App& app, Action& action);
