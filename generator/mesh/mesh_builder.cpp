@@ -1224,7 +1224,6 @@ class Builder {
   }
 
  private:
-
   // A twig the mesh cannot join where it attaches is a fake branch with its clones, as a stub ending inside is:
   // - its wood does not clear its parent's before it ends or splits (it leaves at a few degrees): its tube would
   //   begin past its tip, or its split slab lie in its parent's side;
@@ -1625,10 +1624,6 @@ class Builder {
     computeNormals(m);
   }
 };
-
-}  // namespace
-
-namespace {
 
 TreeMesh buildOnce(const Skeleton& skeleton, const MeshOptions& options, const std::vector<int>& fake, std::vector<int>* farTwigs) {
   TreeMesh out;

@@ -36,7 +36,8 @@ struct TreeMesh {
   std::vector<MeshJoint> joints;
   std::vector<int> quadStem;      // per quad: the stem it belongs to (-1: the root hub)
   // Children left out because the mesh could join them only far from where they attach, or they run inside or
-  // shallow along their parent (MeshOptions::fakeDisplaced): drawn as fake branches, like stubs.
+  // shallow along their parent, or attach just before it splits (MeshOptions::fakeDisplaced): drawn as fake
+  // branches, like stubs.
   std::vector<int> fakedStems;
 };
 
