@@ -1,6 +1,6 @@
 // A tree no Weber-Penn species makes, given as a branch graph: a whorl of six branches at one node, a branch
-// running almost along the trunk (a fake branch unless every stem is meshed), one leaving backwards and a fork of three at a branch's end, with leaves:
-// one closed mesh, tessellated with ACC on lavapipe, against its golden image.
+// running almost along the trunk (a fake branch unless every stem is meshed), one leaving backwards and a fork of
+// three at a branch's end, with leaves: one closed mesh, tessellated with ACC on lavapipe, against its golden image.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <numbers>

@@ -79,8 +79,7 @@ void printSummary(const Checked& c, const SelfIntersectionReport& r) {
   if (r.classified) {
     std::printf("  neck crossings      %zu  (a child against its own parent, a clone against its source)\n", r.neckCrossings);
     if (!c.tree.fakedStems.empty()) {
-      std::printf("  faked stems         %zu  (twigs joined only far from where they attach, inside their parent or shallow along it, with their clones: fake branches, not checked; --mesh-displaced meshes them)\n",
-                  c.tree.fakedStems.size());
+      std::printf("  faked stems         %zu  (%s, not checked; --mesh-displaced meshes them)\n", c.tree.fakedStems.size(), kFakedStemsNote);
     }
     // Where the mesher's crossings are, by how the two stems relate and their levels: what to fix first.
     std::map<std::string, std::size_t> where;

@@ -142,8 +142,7 @@ int runGenerate(const GenerateOptions& o) {
     std::printf("  mesh             %zu quads, %zu vertices in %.1f ms; %zu joints\n", tree.mesh.quads.size(),
                 tree.mesh.vertexCount(), meshMs, tree.joints.size());
     if (!tree.fakedStems.empty()) {
-      std::printf("  faked stems      %zu (twigs the mesh could join only more than half a parent radius from where they attach, inside their parent or shallow along it, with their clones: fake branches)\n",
-                  tree.fakedStems.size());
+      std::printf("  faked stems      %zu (%s)\n", tree.fakedStems.size(), kFakedStemsNote);
     }
     std::printf("  topology         %s, %zu piece(s), Euler characteristic %d, valence %d..%d\n",
                 topology.boundaryEdges == 0 && topology.nonManifoldEdges == 0 ? "closed 2-manifold" : "OPEN OR NON-MANIFOLD",

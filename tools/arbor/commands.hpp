@@ -17,6 +17,9 @@ constexpr const char* kMeshDisplacedHelp =
     "could join only more than half a parent radius along (meshed from that far slab), thin twigs inside or shallow "
     "along their parent, twigs just before their parent splits (default: fake branches on their skeletons, as stubs)";
 
+// What generate and check report as "faked stems" (each kind is listed in kMeshDisplacedHelp).
+constexpr const char* kFakedStemsNote = "twigs the mesh could not join near where they attach, with their clones: fake branches";
+
 void addGenerateCommand(CLI::App& app, Action& action);
 void addMeshCommand(CLI::App& app, Action& action);
 void addSpeciesCommand(CLI::App& app, Action& action);
