@@ -39,7 +39,6 @@ double count(const std::vector<bool>& mask) { return static_cast<double>(std::co
 }  // namespace
 
 TEST_CASE("every fake-branch segment becomes one rectangle", "[render][impostors]") {
-  REQUIRE(test::vulkan().features().geometryShader);
   test::TreeScene scene("quaking-aspen", 2, 1, 64, 80);
   REQUIRE(scene.faked.impostors.size() > 1000);
   render::RenderSettings settings;

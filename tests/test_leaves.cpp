@@ -11,7 +11,6 @@
 using namespace arbor;
 
 TEST_CASE("every leaf becomes one quad, and density keeps that share of them", "[render][leaves]") {
-  REQUIRE(test::vulkan().features().geometryShader);
   test::TreeScene scene("quaking-aspen", 3, 0, 64, 80);
   const std::uint64_t leaves = scene.skeleton.leaves.size();
   REQUIRE(leaves > 1000);

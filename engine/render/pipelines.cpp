@@ -12,12 +12,11 @@
 #include "spirv_ground_frag.h"
 #include "spirv_ground_vert.h"
 #include "spirv_leaf_frag.h"
-#include "spirv_leaf_geom.h"
-#include "spirv_point_vert.h"
+#include "spirv_leaf_vert.h"
 #include "spirv_ceiling_tesc.h"
 #include "spirv_ceiling_tese.h"
 #include "spirv_ceiling_frag.h"
-#include "spirv_impostor_geom.h"
+#include "spirv_impostor_vert.h"
 #include "spirv_impostor_frag.h"
 #include "spirv_sky_frag.h"
 #include "spirv_sky_vert.h"
@@ -214,27 +213,24 @@ void Pipelines::destroy(VkDevice device) {
 Pipelines createPipelines(const vk::VulkanContext& context, VkRenderPass renderPass, VkSampleCountFlagBits samples) {
   const VkDevice device = context.device();
   Pipelines p;
-  const bool geometry = context.features().geometryShader == VK_TRUE;  // leaves need it
   const VkShaderStageFlags all = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT |
-                                 VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT | VK_SHADER_STAGE_FRAGMENT_BIT |
-                                 (geometry ? VkShaderStageFlags{VK_SHADER_STAGE_GEOMETRY_BIT} : VkShaderStageFlags{0});
+                                 VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
   p.pushStages = all;
   // Each binding reaches only the stages that read it: every extra stage costs lavapipe work on each of the
   // thousands of split tessellation draws (adaptive ACC went from 1.4 to 2.1 s with two bindings for all).
   const VkShaderStageFlags evaluation = VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT;
-  const VkShaderStageFlags pointStages = geometry ? VkShaderStageFlags{VK_SHADER_STAGE_GEOMETRY_BIT} : VkShaderStageFlags{VK_SHADER_STAGE_VERTEX_BIT};
   const std::array<VkDescriptorSetLayoutBinding, 10> bindings{{
       {ARBOR_BINDING_SCENE, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, all, nullptr},
       {ARBOR_BINDING_BARK_COLOR, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
       {ARBOR_BINDING_BARK_HEIGHT, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_VERTEX_BIT | evaluation | VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
       {ARBOR_BINDING_CAPTURE, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, evaluation, nullptr},
-      {ARBOR_BINDING_LEAVES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, pointStages, nullptr},
+      {ARBOR_BINDING_LEAVES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT, nullptr},
       {ARBOR_BINDING_LEAF_ATLAS, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
-      {ARBOR_BINDING_IMPOSTORS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, pointStages, nullptr},
+      {ARBOR_BINDING_IMPOSTORS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT, nullptr},
       {ARBOR_BINDING_CONTROL, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1,
        VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT | evaluation, nullptr},
       {ARBOR_BINDING_VISIBLE, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT, nullptr},
-      {ARBOR_BINDING_WIND, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT | pointStages, nullptr},
+      {ARBOR_BINDING_WIND, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT, nullptr},
   }};
   createLayouts(device, bindings.data(), static_cast<std::uint32_t>(bindings.size()), {all, 0, sizeof(DrawConstants)}, p.setLayout,
                 p.layout);
@@ -290,18 +286,13 @@ Pipelines createPipelines(const vk::VulkanContext& context, VkRenderPass renderP
     }
     m.surface = surface(spec);
   }
-  if (geometry) {
-    const auto points = stage(VK_SHADER_STAGE_VERTEX_BIT, spirv_point_vert);
-    PipelineSpec leaves{{points, stage(VK_SHADER_STAGE_GEOMETRY_BIT, spirv_leaf_geom), stage(VK_SHADER_STAGE_FRAGMENT_BIT, spirv_leaf_frag)}};
-    leaves.topology = VK_PRIMITIVE_TOPOLOGY_POINT_LIST;
-    leaves.cullBack = false;  // a leaf is seen from both sides
-    p.leaves = build(device, renderPass, p.layout, samples, leaves);
-    PipelineSpec impostors{{points, stage(VK_SHADER_STAGE_GEOMETRY_BIT, spirv_impostor_geom),
-                            stage(VK_SHADER_STAGE_FRAGMENT_BIT, spirv_impostor_frag)}};
-    impostors.topology = VK_PRIMITIVE_TOPOLOGY_POINT_LIST;
-    impostors.cullBack = false;  // the rectangle's winding depends on which way the branch points on screen
-    p.impostors = build(device, renderPass, p.layout, samples, impostors);
-  }
+  // Cards (cards.hpp): indexed triangles whose vertex stage reads its leaf or segment by gl_VertexIndex.
+  PipelineSpec leaves{{stage(VK_SHADER_STAGE_VERTEX_BIT, spirv_leaf_vert), stage(VK_SHADER_STAGE_FRAGMENT_BIT, spirv_leaf_frag)}};
+  leaves.cullBack = false;  // a leaf is seen from both sides
+  p.leaves = build(device, renderPass, p.layout, samples, leaves);
+  PipelineSpec impostors{{stage(VK_SHADER_STAGE_VERTEX_BIT, spirv_impostor_vert), stage(VK_SHADER_STAGE_FRAGMENT_BIT, spirv_impostor_frag)}};
+  impostors.cullBack = false;  // the card's winding depends on which way the branch points on screen
+  p.impostors = build(device, renderPass, p.layout, samples, impostors);
   return p;
 }
 

@@ -32,8 +32,8 @@ struct Pipelines {
   VkPipeline cull = VK_NULL_HANDLE;          // per frame: cull, set factors, bucket (patch_cull.comp)
   VkPipeline drawCommands = VK_NULL_HANDLE;  // per frame: buckets -> indirect draws (draw_commands.comp)
   VkPipeline wind = VK_NULL_HANDLE;          // per frame with wind: the rest cage posed (wind.comp)
-  VkPipeline leaves = VK_NULL_HANDLE;     // null where the device has no geometry shaders
-  VkPipeline impostors = VK_NULL_HANDLE;  // fake branches; null likewise
+  VkPipeline leaves = VK_NULL_HANDLE;     // cards (cards.hpp)
+  VkPipeline impostors = VK_NULL_HANDLE;  // fake branches, cards likewise
   VkPipeline ceiling = VK_NULL_HANDLE;    // ACC's patches with trivial stages (bench tess)
   VkPipeline lines = VK_NULL_HANDLE;      // unlit coloured line lists (the modeller's wireframes)
   VkShaderStageFlags pushStages = 0;   // every stage the layout's push constants and bindings reach

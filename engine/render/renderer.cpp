@@ -8,6 +8,8 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include "cards.hpp"
+
 namespace arbor::render {
 
 namespace {
@@ -74,6 +76,8 @@ TreeRenderer::TreeRenderer(const vk::VulkanContext& context, VkRenderPass render
   leafSampler_ = vk::createRepeatSampler(context, 3.0f, false);  // clamped + anisotropic: lavapipe minutes/frame
   for (FrameSlot& frame : slots_) frame.scene = vk::hostBuffer(context, sizeof(SceneUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
   setCapture(0);
+  const std::vector<std::uint32_t> cards = cardIndices(kCardsPerDraw);
+  cardIndices_ = vk::uploadBuffer(context, cards.data(), cards.size() * sizeof(std::uint32_t), VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
 
   const VkDevice device = context.device();
   constexpr std::uint32_t kSets = kMaxTrees * kFramesInFlight;
@@ -661,10 +665,15 @@ void TreeRenderer::draw(VkCommandBuffer cmd, VkExtent2D extent, const RenderSett
     drawIndirect(s.ceiling && !wire ? pipelines_.ceiling : pick(mode.surface), plan.commandBase + 1, plan.counterBase + ARBOR_BUCKETS + 1,
                  plan.maxCommands);
   };
-  auto drawPoints = [&](VkPipeline pipeline, std::uint32_t count, std::uint32_t first = 0) {
+  // `count` cards from `first`: gl_VertexIndex / 4 counts from `first` (the vertex offset), one draw per kCardsPerDraw.
+  auto drawCards = [&](VkPipeline pipeline, std::uint32_t count, std::uint32_t first = 0) {
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
-    vkCmdDraw(cmd, count, 1, first, 0);  // the point's index (gl_VertexIndex) counts from `first`
-    ++frame.draws;
+    vkCmdBindIndexBuffer(cmd, cardIndices_.handle(), 0, VK_INDEX_TYPE_UINT32);
+    for (std::uint32_t done = 0; done < count; done += kCardsPerDraw) {
+      const std::uint32_t cards = std::min(kCardsPerDraw, count - done);
+      vkCmdDrawIndexed(cmd, 6 * cards, 1, 0, static_cast<std::int32_t>(4 * (first + done)), 0);
+      ++frame.draws;
+    }
   };
 
   if (frame.timestamps) vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, frame.timestamps, 0);
@@ -676,11 +685,11 @@ void TreeRenderer::draw(VkCommandBuffer cmd, VkExtent2D extent, const RenderSett
     drawMesh(i, tree, false);
     const bool sketch = instance.far && tree.sketchCount > 0;
     const std::uint32_t impostors = sketch ? tree.sketchCount : tree.impostorCount;
-    if (s.impostors && impostors > 0 && pipelines_.impostors) drawPoints(pipelines_.impostors, impostors, sketch ? tree.impostorCount : 0u);
-    if (s.leaves && tree.leafCount > 0 && pipelines_.leaves) {
-      // The geometry stage keeps a leaf when its rank (i + 1/2) / N is within the density, thinned with the square of
+    if (s.impostors && impostors > 0) drawCards(pipelines_.impostors, impostors, sketch ? tree.impostorCount : 0u);
+    if (s.leaves && tree.leafCount > 0) {
+      // The vertex stage keeps a leaf when its rank (i + 1/2) / N is within the density, thinned with the square of
       // its distance beyond leafLodDistance: no leaf of this tree is nearer than its leaf box, so the leaves past
-      // the share kept there need no draw (a far forest runs the geometry stage for a few percent of its leaves).
+      // the share kept there need no draw (a far forest runs the vertex stage for a few percent of its leaves).
       double share = std::clamp(static_cast<double>(s.leafDensity), 0.0, 1.0);
       if (s.leafLodDistance > 0.0f) {
         const glm::vec3 eye(glm::inverse(instance.model) * glm::vec4(eye_, 1.0f));
@@ -688,7 +697,7 @@ void TreeRenderer::draw(VkCommandBuffer cmd, VkExtent2D extent, const RenderSett
         share *= std::min(1.0, std::pow(static_cast<double>(s.leafLodDistance) / std::max(static_cast<double>(nearest), 1e-3), 2.0));
       }
       const double kept = share * tree.leafCount;
-      drawPoints(pipelines_.leaves, std::min(tree.leafCount, static_cast<std::uint32_t>(kept + 0.5) + 1u));
+      drawCards(pipelines_.leaves, std::min(tree.leafCount, static_cast<std::uint32_t>(kept + 0.5) + 1u));
     }
   }
   if (frame.statistics) vkCmdEndQuery(cmd, frame.statistics, 0);

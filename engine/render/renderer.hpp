@@ -36,11 +36,11 @@ struct RenderSettings {
   bool cull = true;              // skip patches outside the view, and (undisplaced) those facing away
   bool bucketed = true;          // size each draw for its patches' own factors (false: all for the largest)
   bool cornerPatches = true;     // patches whose factors are all 1 skip the tessellator (the same picture)
-  bool leaves = false;            // draw the leaves (needs geometry shaders)
+  bool leaves = false;            // draw the leaves
   float leafDensity = 1.0f;       // share of the leaves drawn (0..1), the first of the random order
   float leafLodDistance = 0.0f;   // > 0: all leaves up to this distance (m), then thinning with distance squared
   std::uint32_t shadowLeaves = 0; // self-shadowing: each leaf tests the first this many leaves
-  bool impostors = false;         // draw the fake branches (needs geometry shaders)
+  bool impostors = false;         // draw the fake branches
   bool ceiling = false;           // ACC mode with trivial stages: the device's bare tessellation rate (bench)
   float groundRadius = 0.0f;     // > 0: the ground fades into the horizon this far from the eye (forests)
   bool revealBackFaces = false;  // draw back faces too, in magenta: on a closed surface any that shows is a crack
@@ -101,8 +101,6 @@ class TreeRenderer {
   // Both wait until the device is idle: frames in flight may still read the previous trees.
   void setTree(const GpuTree* tree);                        // one tree, or none (sky and ground only)
   void setTrees(const std::vector<const GpuTree*>& trees);  // a scene's distinct trees, at most kMaxTrees
-  // Leaves and fake branches are expanded from points by geometry shaders, which not every device has.
-  bool drawsLeaves() const { return pipelines_.leaves != VK_NULL_HANDLE; }
   // Captures up to `capacity` evaluated ACC points in the next frames (0 turns it off).
   void setCapture(std::uint32_t capacity);
   std::vector<CapturedPoint> captured() const;
@@ -187,6 +185,7 @@ class TreeRenderer {
   vk::GpuImage barkColor_, barkHeight_, leafAtlas_;
   VkSampler sampler_ = VK_NULL_HANDLE, leafSampler_ = VK_NULL_HANDLE;
   vk::Buffer capture_;
+  vk::Buffer cardIndices_;  // kCardsPerDraw cards' triangles (cards.hpp), shared by every leaf and fake-branch draw
   std::uint32_t captureCapacity_ = 0;
   VkDescriptorPool pool_ = VK_NULL_HANDLE;
   std::vector<const GpuTree*> trees_;

@@ -132,7 +132,6 @@ VulkanContext::VulkanContext(const ContextOptions& options) {
   VkPhysicalDeviceFeatures available;
   vkGetPhysicalDeviceFeatures(physical_, &available);
   enabled_.tessellationShader = VK_TRUE;
-  enabled_.geometryShader = available.geometryShader;
   enabled_.fillModeNonSolid = available.fillModeNonSolid;
   enabled_.pipelineStatisticsQuery = available.pipelineStatisticsQuery;
   enabled_.samplerAnisotropy = available.samplerAnisotropy;

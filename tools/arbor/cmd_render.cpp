@@ -106,15 +106,8 @@ int runRender(const RenderOptions& o) {
   const auto samples = static_cast<VkSampleCountFlagBits>(o.msaa);
   render::RenderSession session(context, width, height, samples, textures);
   session.setTree(tree.mesh, patches, skeleton.leaves, impostors, build.wind ? &geometry.wind : nullptr);
-  if ((o.leaves || settings.impostors) && !session.renderer().drawsLeaves()) {
-    throw std::runtime_error(std::string(o.leaves ? "--leaves" : "--impostors") +
-                             ": this Vulkan device has no geometry shaders, which leaves and fake branches need");
-  }
-  // Stubs (too short or thin for the mesh) are fake branches at every level: drawn wherever the device can.
-  if (!settings.impostors && !impostors.empty()) {
-    if (session.renderer().drawsLeaves()) settings.impostors = true;
-    else std::fprintf(stderr, "arbor: note: %zu stub segments not drawn (this device has no geometry shaders)\n", impostors.size());
-  }
+  // Stubs (too short or thin for the mesh) are fake branches at every level.
+  if (!impostors.empty()) settings.impostors = true;
 
   render::Camera camera;
   const float aspect = static_cast<float>(width) / static_cast<float>(height);

@@ -1,16 +1,12 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-// Leaves (Nystad 5.5.3, 6.5): each point becomes a quad textured with its kind's cell of the leaf atlas.
+// Leaves (Nystad 5.5.3, 6.5): each leaf is a card textured with its kind's cell of the leaf atlas.
 // Distance thins the leaves by their place in the random order, so clusters never pop out whole; the first
 // `shadowLeaves` of that order shade the others (self-shadowing).
 
-layout(points) in;
-layout(triangle_strip, max_vertices = 4) out;
-
 #include "scene.glsl"
 #include "wind.glsl"
-
-layout(location = 0) flat in uint pointIndex[];
+#include "card.glsl"
 
 layout(location = 0) out vec3 worldPosition;
 layout(location = 1) out vec3 worldNormal;
@@ -18,7 +14,7 @@ layout(location = 2) out vec2 atlasCoordinate;
 layout(location = 3) flat out float lightReaching;  // 1: unshadowed, 0: behind another leaf
 
 void main() {
-  uint i = pointIndex[0];
+  uint i = cardIndex();
   Leaf leaf = leaves[i];
   // The wind moves the blade's base with its node and flutters its tip along its normal.
   vec3 restBase = leaf.positionLength.xyz;
@@ -35,7 +31,10 @@ void main() {
   float kept = scene.leafLod.y;
   if (scene.leafLod.x > 0.0) kept *= min(1.0, pow(scene.leafLod.x / max(eyeDistance, 1e-3), 2.0));
   float rank = (float(i) + 0.5) / max(float(draw.leafCount), 1.0);
-  if (rank > kept) return;
+  if (rank > kept) {
+    gl_Position = kNoCard;
+    return;
+  }
   float size = scene.leafLod.x > 0.0 ? clamp((kept - rank) / (0.1 * kept), 0.0, 1.0) : 1.0;
 
   vec3 along = mat3(draw.model) * (leaf.directionWidth.xyz + leaf.normalKind.xyz * flutter);
@@ -55,9 +54,10 @@ void main() {
   }
 
   // Self-shadowing against the first leaves of the random order: c = saturate(1 - 100 (b_dot - 0.99)).
-  vec3 l = normalize(scene.lightDir.xyz);
+  // A flat output: only the provoking corner pays for the loop.
   float c = 1.0;
-  uint count = min(uint(scene.leafLod.w), draw.leafCount);
+  uint count = cardProvoking() ? min(uint(scene.leafLod.w), draw.leafCount) : 0u;
+  vec3 l = normalize(scene.lightDir.xyz);
   for (uint j = 0u; j < count; ++j) {
     if (j == i) continue;
     vec3 towards = (draw.model * vec4(leaves[j].positionLength.xyz, 1.0)).xyz - base;
@@ -68,15 +68,12 @@ void main() {
   }
 
   vec2 cell = vec2(float(kind % 2u), float(kind / 2u)) * 0.5;
-  for (int corner = 0; corner < 4; ++corner) {
-    float s = (corner & 1) != 0 ? 1.0 : -1.0;  // across
-    float t = (corner & 2) != 0 ? 1.0 : 0.0;   // base to tip
-    worldPosition = base + along * bladeLength * t + across * halfWidth * s;
-    worldNormal = normal;
-    atlasCoordinate = cell + vec2(0.25 + 0.25 * s, 0.5 - 0.5 * t);
-    lightReaching = c;
-    gl_Position = scene.viewProj * vec4(worldPosition, 1.0);
-    EmitVertex();
-  }
-  EndPrimitive();
+  uint corner = cardCorner();
+  float s = (corner & 1u) != 0u ? 1.0 : -1.0;  // across
+  float t = (corner & 2u) != 0u ? 1.0 : 0.0;   // base to tip
+  worldPosition = base + along * bladeLength * t + across * halfWidth * s;
+  worldNormal = normal;
+  atlasCoordinate = cell + vec2(0.25 + 0.25 * s, 0.5 - 0.5 * t);
+  lightReaching = c;
+  gl_Position = scene.viewProj * vec4(worldPosition, 1.0);
 }

@@ -1,15 +1,11 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-// Fake branches (Nystad 5.5.4): each skeleton edge becomes a rectangle facing the eye, as wide as the branch,
+// Fake branches (Nystad 5.5.4): each skeleton edge becomes a card facing the eye, as wide as the branch,
 // that the fragment stage shades as the cylinder it stands for.
-
-layout(points) in;
-layout(triangle_strip, max_vertices = 4) out;
 
 #include "scene.glsl"
 #include "wind.glsl"
-
-layout(location = 0) flat in uint pointIndex[];
+#include "card.glsl"
 
 layout(location = 0) out vec3 worldPosition;
 layout(location = 1) out vec2 acrossAndV;       // x: -1 .. 1 across the rectangle, y: bark texture v
@@ -18,10 +14,11 @@ layout(location = 3) flat out vec3 facing;      // unit vector from the axis tow
 layout(location = 4) out float radius;
 
 void main() {
-  Impostor segment = impostors[pointIndex[0]];
+  uint index = cardIndex();
+  Impostor segment = impostors[index];
   vec3 from = segment.fromRadius.xyz, to = segment.toRadius.xyz;
   if (draw.windHeight > 0.0) {  // both ends move with their skeleton nodes
-    uint w = draw.impostorWindBase + 2u * ARBOR_WIND_VEC4S * pointIndex[0];
+    uint w = draw.impostorWindBase + 2u * ARBOR_WIND_VEC4S * index;
     from += windOffset(from, windPoints[w], windPoints[w + 1u], draw.windHeight);
     to += windOffset(to, windPoints[w + 2u], windPoints[w + 3u], draw.windHeight);
   }
@@ -31,25 +28,20 @@ void main() {
   vec3 axis = length_ > 1e-9 ? (b - a) / length_ : vec3(0.0, 0.0, 1.0);
   vec3 toEye = scene.cameraPos.xyz - 0.5 * (a + b);
   vec3 side = cross(axis, toEye);
-  // Seen end-on the rectangle has no preferred side; any perpendicular keeps the count of quads exact.
+  // Seen end-on the card has no preferred side; any perpendicular keeps the count of quads exact.
   if (dot(side, side) <= 1e-12 * max(dot(toEye, toEye), 1e-12)) side = cross(axis, abs(axis.x) < 0.9 ? vec3(1, 0, 0) : vec3(0, 1, 0));
   side = normalize(side);
   vec3 front = cross(side, axis);  // (axis x e) x axis: the eye direction without its part along the axis
   // Each end reaches on by half its radius, so consecutive segments overlap where the stem bends.
-  float r0 = segment.fromRadius.w, r1 = segment.toRadius.w;
-  vec3 ends[2] = vec3[2](a - axis * (0.5 * r0), b + axis * (0.5 * r1));
-  float radii[2] = float[2](r0, r1);
-  float v[2] = float[2](segment.barkV.x, segment.barkV.y);
-  for (int corner = 0; corner < 4; ++corner) {
-    int end = corner / 2;
-    float s = (corner & 1) != 0 ? 1.0 : -1.0;
-    worldPosition = ends[end] + side * (radii[end] * s);
-    acrossAndV = vec2(s, v[end]);
-    sideways = side;
-    facing = front;
-    radius = radii[end];
-    gl_Position = scene.viewProj * vec4(worldPosition, 1.0);
-    EmitVertex();
-  }
-  EndPrimitive();
+  uint corner = cardCorner();
+  bool atEnd = (corner & 2u) != 0u;
+  float r = atEnd ? segment.toRadius.w : segment.fromRadius.w;
+  vec3 end = atEnd ? b + axis * (0.5 * r) : a - axis * (0.5 * r);
+  float s = (corner & 1u) != 0u ? 1.0 : -1.0;
+  worldPosition = end + side * (r * s);
+  acrossAndV = vec2(s, atEnd ? segment.barkV.y : segment.barkV.x);
+  sideways = side;
+  facing = front;
+  radius = r;
+  gl_Position = scene.viewProj * vec4(worldPosition, 1.0);
 }
