@@ -5,6 +5,7 @@
 #include "growth/weber_penn/weber_penn.hpp"
 #include "image/image_compare.hpp"
 #include "mesh/tree_mesh.hpp"
+#include "render/cards.hpp"
 #include "render_support.hpp"
 #include "test_support.hpp"
 
@@ -22,6 +23,19 @@ TEST_CASE("every leaf becomes one quad, and density keeps that share of them", "
   settings.leafDensity = 0.25f;
   const std::uint64_t quarter = scene.session.render(scene.framed(), settings).gpu.triangles - bare;
   CHECK(std::abs(static_cast<double>(quarter) - 0.5 * static_cast<double>(leaves)) <= 2.0);  // 2 per kept leaf
+}
+
+TEST_CASE("more leaves than one draw's cards: every leaf drawn, one more draw per kCardsPerDraw", "[render][leaves]") {
+  test::TreeScene scene("quaking-aspen", 3, 1, 64, 80);  // leaves at the fourth level: several hundred thousand
+  const std::uint64_t leaves = scene.skeleton.leaves.size();
+  REQUIRE(leaves > 2 * render::kCardsPerDraw);
+  render::RenderSettings settings;
+  settings.mode = render::RenderMode::Flat;
+  const render::FrameStats bare = scene.session.render(scene.framed(), settings).gpu;
+  settings.leaves = true;
+  const render::FrameStats with = scene.session.render(scene.framed(), settings).gpu;
+  CHECK(with.triangles == bare.triangles + 2 * leaves);
+  CHECK(with.draws == bare.draws + (leaves + render::kCardsPerDraw - 1) / render::kCardsPerDraw);
 }
 
 TEST_CASE("distance thins the leaves gradually, the farther the fewer", "[render][leaves]") {
