@@ -55,6 +55,8 @@ constexpr double kThinTwig = 0.5;
 constexpr double kBeforeSplit = 4.0;
 // The joint floor (docs/mesh.md): a child's first ring at most this many parent radii along from its attachment.
 constexpr double kFarChild = 1.5;
+// A slab whose stem turns by more than this (cosine between its ends' directions: 30 degrees) faces along its chord.
+constexpr double kSlabTurn = 0.866;
 // Passes of faking the twigs an earlier pass left past kFarChild.
 constexpr int kFarTwigPasses = 3;
 
@@ -1045,12 +1047,25 @@ class Builder {
       // A plain cross section the band to which would run backwards (the inside of a bend tighter than the radius)
       // is left out: the tube goes on to the next one (all trees' folds 1,584 -> 1,551, mesh-made pairs -0.7 %).
       if (role == -2 && !ringAhead(poly, last, s)) continue;
-      const Ring next = makeRing(stem, poly, last, s, role >= -1 ? slabNeed(slabs, s) : 0.0);
+      const Ring next = makeRing(stem, poly, last, s, role >= -1 ? slabNeed(slabs, s) : 0.0, false, slabAxis(poly, slabs, s, role));
       if (role >= 0) connectSlab(stem, last, next, slabs[static_cast<std::size_t>(role)]);
       else band(last, next);
       last = next;
       previousS = s;
     }
+  }
+
+  // A slab around a sharp turn of its stem: both its cross sections face along its chord, so the slab is a straight
+  // box and the inside of the turn cannot fold between them (each facing its own edge, they crossed there).
+  static std::optional<Vec3> slabAxis(const StemPolyline& poly, const std::vector<Slab>& slabs, double s, int role) {
+    if (role < -1) return std::nullopt;
+    for (const Slab& slab : slabs) {
+      if (role >= 0 ? &slab != &slabs[static_cast<std::size_t>(role)] : slab.lo != s) continue;
+      const Vec3 chord = poly.position(slab.hi) - poly.position(slab.lo);
+      if (glm::dot(poly.direction(slab.lo), poly.direction(slab.hi)) > kSlabTurn || glm::length(chord) <= 0.0) return std::nullopt;
+      return glm::normalize(chord);
+    }
+    return std::nullopt;
   }
 
   // minRadius: a slab's cross sections must hold its children, even where the stem tapers to a point.
@@ -1063,10 +1078,11 @@ class Builder {
   }
 
   // keepFrame: the last cross section's frame instead of one turned to the skeleton's direction at s.
-  Ring makeRing(int stem, const StemPolyline& poly, const Ring& last, double s, double minRadius = 0.0, bool keepFrame = false) {
+  Ring makeRing(int stem, const StemPolyline& poly, const Ring& last, double s, double minRadius = 0.0, bool keepFrame = false,
+                std::optional<Vec3> axis = std::nullopt) {
     const Vec3 p = poly.position(s);
     const double r = std::max({poly.radius(s), minRadius, 1e-5 * sk_.treeScale});
-    const RingFrame frame = keepFrame ? last.frame : transportFrame(last.frame, poly.direction(s));
+    const RingFrame frame = keepFrame ? last.frame : transportFrame(last.frame, axis.value_or(poly.direction(s)));
     return emitRing(stem, p, frame, r, last.tex + barkTextureAdvance(glm::distance(p, last.center), 0.5 * (r + last.radius)), s);
   }
 
