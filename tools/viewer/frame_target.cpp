@@ -2,6 +2,8 @@
 
 #include <array>
 
+#include "render/renderer.hpp"
+
 namespace arbor::viewer {
 
 namespace {
@@ -53,35 +55,81 @@ class WindowTarget final : public FrameTarget {
   bool completed_ = false;
 };
 
+// Offscreen frames run two in flight, as the window's do, each into its own image: the viewer's pace offscreen is
+// then the slower of recording and drawing, not their sum. A frame waits to complete only when its picture is wanted.
 class OffscreenFrames final : public FrameTarget {
  public:
-  OffscreenFrames(const vk::VulkanContext& context, VkExtent2D size)
-      : context_(context), target_(std::make_unique<render::OffscreenTarget>(context, size.width, size.height)) {}
+  static constexpr std::uint32_t kFrames = window::Swapchain::kFramesInFlight;
+  static_assert(kFrames <= render::TreeRenderer::kFramesInFlight, "the renderer keeps per-frame resources for every frame in flight");
+
+  OffscreenFrames(const vk::VulkanContext& context, VkExtent2D size) : context_(context) {
+    makeTargets(size);
+    VkCommandBufferAllocateInfo alloc{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+    alloc.commandPool = context.commandPool();
+    alloc.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+    alloc.commandBufferCount = kFrames;
+    vk::check(vkAllocateCommandBuffers(context.device(), &alloc, cmd_.data()), "vkAllocateCommandBuffers");
+    VkFenceCreateInfo fence{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+    fence.flags = VK_FENCE_CREATE_SIGNALED_BIT;  // nothing to wait for before the first frames
+    for (VkFence& f : fences_) vk::check(vkCreateFence(context.device(), &fence, nullptr, &f), "vkCreateFence");
+  }
+  ~OffscreenFrames() override {
+    waitIdle();
+    for (VkFence f : fences_) vkDestroyFence(context_.device(), f, nullptr);
+    vkFreeCommandBuffers(context_.device(), context_.commandPool(), kFrames, cmd_.data());
+  }
+  OffscreenFrames(const OffscreenFrames&) = delete;
+  OffscreenFrames& operator=(const OffscreenFrames&) = delete;
 
   // Every target of one context has the same formats, so a renderer made for the first draws into any later one.
-  VkRenderPass renderPass() const override { return target_->renderPass(); }
-  VkExtent2D extent() const override { return target_->extent(); }
-  std::uint32_t imageCount() const override { return 1; }
+  VkRenderPass renderPass() const override { return targets_[0]->renderPass(); }
+  VkExtent2D extent() const override { return targets_[0]->extent(); }
+  std::uint32_t imageCount() const override { return kFrames; }
   bool draw(const Recorder& before, const Recorder& inside, bool screenshot) override {
-    context_.submitAndWait([&](VkCommandBuffer cmd) {
-      before(cmd);
-      recordPass(cmd, target_->renderPass(), target_->framebuffer(), target_->extent(), inside);
-      if (screenshot) target_->recordReadback(cmd);
-    });
+    const VkDevice device = context_.device();
+    // The frame that last used this slot: its image, its command buffer and the renderer's per-frame resources.
+    vk::check(vkWaitForFences(device, 1, &fences_[slot_], VK_TRUE, UINT64_MAX), "vkWaitForFences");
+    vk::check(vkResetFences(device, 1, &fences_[slot_]), "vkResetFences");
+    const VkCommandBuffer cmd = cmd_[slot_];
+    vk::check(vkResetCommandBuffer(cmd, 0), "vkResetCommandBuffer");
+    VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+    begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+    vk::check(vkBeginCommandBuffer(cmd, &begin), "vkBeginCommandBuffer");
+    const render::OffscreenTarget& target = *targets_[slot_];
+    before(cmd);
+    recordPass(cmd, target.renderPass(), target.framebuffer(), target.extent(), inside);
+    if (screenshot) target.recordReadback(cmd);
+    vk::check(vkEndCommandBuffer(cmd), "vkEndCommandBuffer");
+    VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+    submit.commandBufferCount = 1;
+    submit.pCommandBuffers = &cmd;
+    vk::check(vkQueueSubmit(context_.queue(), 1, &submit, fences_[slot_]), "vkQueueSubmit");
+    if (screenshot) vk::check(vkWaitForFences(device, 1, &fences_[slot_], VK_TRUE, UINT64_MAX), "vkWaitForFences");
+    completed_ = screenshot;
+    last_ = slot_;
+    slot_ = (slot_ + 1) % kFrames;
     return true;
   }
-  bool lastFrameCompleted() const override { return true; }
-  Image screenshot() const override { return target_->readback(); }
+  bool lastFrameCompleted() const override { return completed_; }
+  Image screenshot() const override { return targets_[last_]->readback(); }
   void resize(VkExtent2D size) override {
     if (size.width == extent().width && size.height == extent().height) return;
     waitIdle();
-    target_ = std::make_unique<render::OffscreenTarget>(context_, size.width, size.height);
+    makeTargets(size);
   }
   void waitIdle() const override { vkQueueWaitIdle(context_.queue()); }
 
  private:
+  void makeTargets(VkExtent2D size) {
+    for (auto& t : targets_) t = std::make_unique<render::OffscreenTarget>(context_, size.width, size.height);
+  }
+
   const vk::VulkanContext& context_;
-  std::unique_ptr<render::OffscreenTarget> target_;
+  std::array<std::unique_ptr<render::OffscreenTarget>, kFrames> targets_;
+  std::array<VkCommandBuffer, kFrames> cmd_{};
+  std::array<VkFence, kFrames> fences_{};
+  std::uint32_t slot_ = 0, last_ = 0;
+  bool completed_ = false;
 };
 
 }  // namespace
