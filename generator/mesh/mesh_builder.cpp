@@ -1077,7 +1077,8 @@ class Builder {
     return need;
   }
 
-  // keepFrame: the last cross section's frame instead of one turned to the skeleton's direction at s.
+  // keepFrame: the last cross section's frame instead of one turned to the skeleton's direction at s; axis: a
+  // direction to face instead of the skeleton's (a slab on a sharp turn).
   Ring makeRing(int stem, const StemPolyline& poly, const Ring& last, double s, double minRadius = 0.0, bool keepFrame = false,
                 std::optional<Vec3> axis = std::nullopt) {
     const Vec3 p = poly.position(s);
