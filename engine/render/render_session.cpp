@@ -27,13 +27,7 @@ std::vector<TreeInstance> RenderSession::treeInstances() const {
   return tree_ ? std::vector<TreeInstance>{{0, plantedModel(*tree_)}} : std::vector<TreeInstance>{};
 }
 
-RenderSession::~RenderSession() {
-  vkDeviceWaitIdle(context_.device());
-  for (VkFence fence : fences_) {
-    if (fence) vkDestroyFence(context_.device(), fence, nullptr);
-  }
-  if (commands_[0]) vkFreeCommandBuffers(context_.device(), context_.commandPool(), TreeRenderer::kFramesInFlight, commands_.data());
-}
+RenderSession::~RenderSession() { vkDeviceWaitIdle(context_.device()); }
 
 void RenderSession::recordFrame(VkCommandBuffer cmd, const Camera& camera, const RenderSettings& settings,
                                 const std::vector<TreeInstance>& instances) {
@@ -54,47 +48,24 @@ void RenderSession::recordFrame(VkCommandBuffer cmd, const Camera& camera, const
 
 std::vector<double> RenderSession::renderInFlight(const Camera& camera, const RenderSettings& settings, const std::vector<TreeInstance>& instances,
                                                   int frames, FrameResult& last) {
-  const VkDevice device = context_.device();
-  if (!commands_[0]) {
-    VkCommandBufferAllocateInfo alloc{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
-    alloc.commandPool = context_.commandPool();
-    alloc.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-    alloc.commandBufferCount = TreeRenderer::kFramesInFlight;
-    vk::check(vkAllocateCommandBuffers(device, &alloc, commands_.data()), "vkAllocateCommandBuffers");
-    VkFenceCreateInfo fence{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
-    fence.flags = VK_FENCE_CREATE_SIGNALED_BIT;
-    for (VkFence& f : fences_) vk::check(vkCreateFence(device, &fence, nullptr, &f), "vkCreateFence");
-  }
-  vkDeviceWaitIdle(device);  // frames before this run were waited for one by one; start from a quiet device
+  if (!frames_) frames_ = std::make_unique<vk::FrameRing>(context_, TreeRenderer::kFramesInFlight);
+  vkDeviceWaitIdle(context_.device());  // frames before this run were waited for one by one; start from a quiet device
   std::vector<double> intervals;
   auto previous = std::chrono::steady_clock::now();
-  const auto waitFor = [&](std::uint32_t slot) {
-    vk::check(vkWaitForFences(device, 1, &fences_[slot], VK_TRUE, UINT64_MAX), "vkWaitForFences");
-  };
   for (int f = 0; f < frames; ++f) {
-    // The renderer cycles its slots with each beginFrame, as this loop cycles its command buffers and fences.
+    // The renderer cycles its slots with each beginFrame, as this loop cycles the ring's.
     const auto slot = static_cast<std::uint32_t>(f) % TreeRenderer::kFramesInFlight;
-    waitFor(slot);
+    frames_->wait(slot);
     if (f >= static_cast<int>(TreeRenderer::kFramesInFlight)) {
       const auto now = std::chrono::steady_clock::now();  // frame f - kFramesInFlight is done
       intervals.push_back(std::chrono::duration<double, std::milli>(now - previous).count());
       previous = now;
     }
-    vk::check(vkResetFences(device, 1, &fences_[slot]), "vkResetFences");
-    const VkCommandBuffer cmd = commands_[slot];
-    vk::check(vkResetCommandBuffer(cmd, 0), "vkResetCommandBuffer");
-    VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
-    begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
-    vk::check(vkBeginCommandBuffer(cmd, &begin), "vkBeginCommandBuffer");
-    recordFrame(cmd, camera, settings, instances);
-    vk::check(vkEndCommandBuffer(cmd), "vkEndCommandBuffer");
-    VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
-    submit.commandBufferCount = 1;
-    submit.pCommandBuffers = &cmd;
-    vk::check(vkQueueSubmit(context_.queue(), 1, &submit, fences_[slot]), "vkQueueSubmit");
+    recordFrame(frames_->begin(slot), camera, settings, instances);
+    frames_->submit(slot);
   }
   for (int f = std::max(0, frames - static_cast<int>(TreeRenderer::kFramesInFlight)); f < frames; ++f) {
-    waitFor(static_cast<std::uint32_t>(f) % TreeRenderer::kFramesInFlight);
+    frames_->wait(static_cast<std::uint32_t>(f) % TreeRenderer::kFramesInFlight);
     const auto now = std::chrono::steady_clock::now();
     intervals.push_back(std::chrono::duration<double, std::milli>(now - previous).count());
     previous = now;

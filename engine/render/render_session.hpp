@@ -5,6 +5,7 @@
 
 #include "offscreen.hpp"
 #include "renderer.hpp"
+#include "vk/frame_ring.hpp"
 
 namespace arbor::render {
 
@@ -47,8 +48,7 @@ class RenderSession {
   void recordFrame(VkCommandBuffer cmd, const Camera& camera, const RenderSettings& settings, const std::vector<TreeInstance>& instances);
 
   std::unique_ptr<GpuTree> tree_;
-  std::array<VkCommandBuffer, TreeRenderer::kFramesInFlight> commands_{};
-  std::array<VkFence, TreeRenderer::kFramesInFlight> fences_{};
+  std::unique_ptr<vk::FrameRing> frames_;  // made by the first renderInFlight
 };
 
 // The project's textures from assets/textures (made by `arbor textures`).

@@ -3,6 +3,7 @@
 #include <array>
 
 #include "render/renderer.hpp"
+#include "vk/frame_ring.hpp"
 
 namespace arbor::viewer {
 
@@ -62,49 +63,21 @@ class OffscreenFrames final : public FrameTarget {
   static constexpr std::uint32_t kFrames = window::Swapchain::kFramesInFlight;
   static_assert(kFrames <= render::TreeRenderer::kFramesInFlight, "the renderer keeps per-frame resources for every frame in flight");
 
-  OffscreenFrames(const vk::VulkanContext& context, VkExtent2D size) : context_(context) {
-    makeTargets(size);
-    VkCommandBufferAllocateInfo alloc{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
-    alloc.commandPool = context.commandPool();
-    alloc.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-    alloc.commandBufferCount = kFrames;
-    vk::check(vkAllocateCommandBuffers(context.device(), &alloc, cmd_.data()), "vkAllocateCommandBuffers");
-    VkFenceCreateInfo fence{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
-    fence.flags = VK_FENCE_CREATE_SIGNALED_BIT;  // nothing to wait for before the first frames
-    for (VkFence& f : fences_) vk::check(vkCreateFence(context.device(), &fence, nullptr, &f), "vkCreateFence");
-  }
-  ~OffscreenFrames() override {
-    waitIdle();
-    for (VkFence f : fences_) vkDestroyFence(context_.device(), f, nullptr);
-    vkFreeCommandBuffers(context_.device(), context_.commandPool(), kFrames, cmd_.data());
-  }
-  OffscreenFrames(const OffscreenFrames&) = delete;
-  OffscreenFrames& operator=(const OffscreenFrames&) = delete;
+  OffscreenFrames(const vk::VulkanContext& context, VkExtent2D size) : context_(context), frames_(context, kFrames) { makeTargets(size); }
 
   // Every target of one context has the same formats, so a renderer made for the first draws into any later one.
   VkRenderPass renderPass() const override { return targets_[0]->renderPass(); }
   VkExtent2D extent() const override { return targets_[0]->extent(); }
   std::uint32_t imageCount() const override { return kFrames; }
   bool draw(const Recorder& before, const Recorder& inside, bool screenshot) override {
-    const VkDevice device = context_.device();
-    // The frame that last used this slot: its image, its command buffer and the renderer's per-frame resources.
-    vk::check(vkWaitForFences(device, 1, &fences_[slot_], VK_TRUE, UINT64_MAX), "vkWaitForFences");
-    vk::check(vkResetFences(device, 1, &fences_[slot_]), "vkResetFences");
-    const VkCommandBuffer cmd = cmd_[slot_];
-    vk::check(vkResetCommandBuffer(cmd, 0), "vkResetCommandBuffer");
-    VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
-    begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
-    vk::check(vkBeginCommandBuffer(cmd, &begin), "vkBeginCommandBuffer");
+    // The frame that last used this slot (its image, commands and the renderer's per-frame resources) is waited for.
+    const VkCommandBuffer cmd = frames_.begin(slot_);
     const render::OffscreenTarget& target = *targets_[slot_];
     before(cmd);
     recordPass(cmd, target.renderPass(), target.framebuffer(), target.extent(), inside);
     if (screenshot) target.recordReadback(cmd);
-    vk::check(vkEndCommandBuffer(cmd), "vkEndCommandBuffer");
-    VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
-    submit.commandBufferCount = 1;
-    submit.pCommandBuffers = &cmd;
-    vk::check(vkQueueSubmit(context_.queue(), 1, &submit, fences_[slot_]), "vkQueueSubmit");
-    if (screenshot) vk::check(vkWaitForFences(device, 1, &fences_[slot_], VK_TRUE, UINT64_MAX), "vkWaitForFences");
+    frames_.submit(slot_);
+    if (screenshot) frames_.wait(slot_);
     completed_ = screenshot;
     last_ = slot_;
     slot_ = (slot_ + 1) % kFrames;
@@ -126,8 +99,7 @@ class OffscreenFrames final : public FrameTarget {
 
   const vk::VulkanContext& context_;
   std::array<std::unique_ptr<render::OffscreenTarget>, kFrames> targets_;
-  std::array<VkCommandBuffer, kFrames> cmd_{};
-  std::array<VkFence, kFrames> fences_{};
+  vk::FrameRing frames_;  // after the targets: destroyed first, it waits for the frames drawing into them
   std::uint32_t slot_ = 0, last_ = 0;
   bool completed_ = false;
 };
