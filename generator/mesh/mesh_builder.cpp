@@ -368,8 +368,10 @@ class Builder {
     // The first cross section must clear the port by its own size, or its tube grazes the parent. It leaves
     // between the port's normal and the child's direction; where that neck would cut a face of the parent,
     // straighter and longer necks are tried.
+    // A split clone leaves at a small angle: its collar leans along its own direction (docs/mesh.md, Equal split).
     const bool clone = sk_.stems[static_cast<std::size_t>(stem)].cloneOf >= 0;
-    const Vec3 preferred = start.top ? directionOr(normal + (clone ? 3.0 : 1.0) * d, normal) : clone ? directionOr(normal + 8.0 * d, normal)
+    const Vec3 preferred = start.top ? directionOr(normal + (clone ? 3.0 : 1.0) * d, normal)
+                           : clone   ? directionOr(normal + 8.0 * d, normal)
                                      : (glm::dot(d, normal) > 0.2 ? glm::normalize(2.0 * normal + d) : normal);
     // A port is as wide as the parent; the neck narrows to the child's own radius at its first cross section
     // (a collar any wider stands out across passing and neighbouring twigs: all trees' mesh-made pairs 66,084 at

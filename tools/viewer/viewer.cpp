@@ -210,7 +210,7 @@ int runViewer(const ViewerOptions& o, ViewState& state, ViewerScene& scene) {
     }
     target->waitIdle();
     if (!frameMs.empty()) {
-      // Offscreen waits for each frame (no frames in flight): its figure is the render's whole cost, the window's is its pace.
+      // The pace with two frames in flight (window or offscreen): the slower of recording and drawing.
       std::sort(frameMs.begin(), frameMs.end());
       char gpu[64] = "";
       if (!gpuMs.empty()) {
