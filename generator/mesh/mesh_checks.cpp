@@ -149,8 +149,8 @@ bool oneSide(const std::array<V, 3>& t, const std::array<V, 3>& s) {
   return (a > 0 && b > 0 && c > 0) || (a < 0 && b < 0 && c < 0);
 }
 
-bool trianglesIntersect(const std::array<V, 3>& t, const std::array<V, 3>& s) {
-  if (oneSide(t, s) || oneSide(s, t)) return false;
+// Whether an edge of either triangle passes through the other (the test past the planes' early out).
+bool edgesCross(const std::array<V, 3>& t, const std::array<V, 3>& s) {
   for (int i = 0; i < 3; ++i) {
     if (segmentHitsTriangle(t[static_cast<std::size_t>(i)], t[static_cast<std::size_t>((i + 1) % 3)], s[0], s[1], s[2])) return true;
     if (segmentHitsTriangle(s[static_cast<std::size_t>(i)], s[static_cast<std::size_t>((i + 1) % 3)], t[0], t[1], t[2])) return true;
@@ -158,14 +158,38 @@ bool trianglesIntersect(const std::array<V, 3>& t, const std::array<V, 3>& s) {
   return false;
 }
 
+bool trianglesIntersect(const std::array<V, 3>& t, const std::array<V, 3>& s) {
+  return !oneSide(t, s) && !oneSide(s, t) && edgesCross(t, s);
+}
+
+// Signed distances (times the normal's length) of the corners p to the planes of q's two triangles, q0 q1 q2 and
+// q0 q2 q3: the same numbers oneSide computes for each pair of triangles.
+std::array<std::array<double, 4>, 2> planeHeights(const std::array<V, 4>& q, const std::array<V, 4>& p) {
+  const std::array<V, 2> n{glm::cross(q[1] - q[0], q[2] - q[0]), glm::cross(q[2] - q[0], q[3] - q[0])};
+  std::array<std::array<double, 4>, 2> h{};
+  for (std::size_t t = 0; t < 2; ++t)
+    for (std::size_t k = 0; k < 4; ++k) h[t][k] = glm::dot(n[t], p[k] - q[0]);
+  return h;
+}
+
 }  // namespace
 
 bool quadsIntersect(const std::array<glm::dvec3, 4>& a, const std::array<glm::dvec3, 4>& b) {
-  const std::array<std::array<V, 3>, 2> ta{{{a[0], a[1], a[2]}, {a[0], a[2], a[3]}}};
-  const std::array<std::array<V, 3>, 2> tb{{{b[0], b[1], b[2]}, {b[0], b[2], b[3]}}};
-  for (const auto& t : ta)
-    for (const auto& s : tb)
-      if (trianglesIntersect(t, s)) return true;
+  // Each triangle's plane once for all four pairs of triangles (the early out is most of the calls).
+  constexpr std::array<std::array<std::size_t, 3>, 2> corners{{{0, 1, 2}, {0, 2, 3}}};
+  const auto aOnB = planeHeights(b, a), bOnA = planeHeights(a, b);
+  auto oneSideOf = [&](const std::array<double, 4>& h, std::size_t t) {
+    const double x = h[corners[t][0]], y = h[corners[t][1]], z = h[corners[t][2]];
+    return (x > 0 && y > 0 && z > 0) || (x < 0 && y < 0 && z < 0);
+  };
+  for (std::size_t i = 0; i < 2; ++i) {
+    for (std::size_t j = 0; j < 2; ++j) {
+      if (oneSideOf(aOnB[j], i) || oneSideOf(bOnA[i], j)) continue;
+      const std::array<V, 3> t{a[corners[i][0]], a[corners[i][1]], a[corners[i][2]]};
+      const std::array<V, 3> s{b[corners[j][0]], b[corners[j][1]], b[corners[j][2]]};
+      if (edgesCross(t, s)) return true;
+    }
+  }
   return false;
 }
 
