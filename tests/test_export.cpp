@@ -704,6 +704,16 @@ TEST_CASE("OBJ of an asset: cards as objects after the surface, read back as the
   writeObjCards(leafCards(mixed), "leaves", "leaves", mixedCounts, mixedParts);
   writeObjAsset(bark, {}, mixed, false, mixedOnce, Up::Y, "palm.mtl");
   CHECK(mixedOnce.str() == mixedParts.str());
+  // The leaves' lines printed ahead (while a tree file's bark is meshed) give the same text; printed for the
+  // other axis they are refused.
+  const auto notYet = [] { return false; };
+  const auto enough = [] { return true; };
+  std::ostringstream ahead, numberedOnly, wrongAxis;
+  writeObjAsset(bark, {}, *printObjLeafLines(mixed, Up::Y, notYet), false, ahead, Up::Y, "palm.mtl");
+  CHECK(ahead.str() == mixedParts.str());
+  writeObjAsset(bark, {}, *printObjLeafLines(mixed, Up::Y, enough), false, numberedOnly, Up::Y, "palm.mtl");
+  CHECK(numberedOnly.str() == mixedParts.str());
+  CHECK_THROWS_AS(writeObjAsset(bark, {}, *printObjLeafLines(mixed, Up::Z, notYet), false, wrongAxis, Up::Y, ""), std::invalid_argument);
   // Cards sharing corners are not what the writer numbers: refused, not written wrong.
   CardMesh shared = leafCards({mixed[0], mixed[1]});
   shared.quads[1][0] = shared.quads[0][3];
@@ -788,6 +798,15 @@ TEST_CASE("OBJ of an asset in one pass: the same text as its parts in turn, over
     writeObjCards(asset.leaves, "leaves", "", counts, parts, Up::Z);
     writeObjAsset(bark, leftOutSegments(skeleton, asset.lods[0].meshedLevels, asset.lods[0].fakedStems), skeleton.leaves, triangles, once, Up::Z, "");
     CHECK(once.str() == parts.str());
+    // Leaves' lines printed ahead, over several blocks, and stopped part way (after the first block).
+    std::ostringstream ahead, partWay;
+    writeObjAsset(bark, leftOutSegments(skeleton, asset.lods[0].meshedLevels, asset.lods[0].fakedStems),
+                  *printObjLeafLines(skeleton.leaves, Up::Z, [] { return false; }), triangles, ahead, Up::Z, "");
+    CHECK(ahead.str() == parts.str());
+    int blocks = 0;
+    writeObjAsset(bark, leftOutSegments(skeleton, asset.lods[0].meshedLevels, asset.lods[0].fakedStems),
+                  *printObjLeafLines(skeleton.leaves, Up::Z, [&] { return ++blocks > 2; }), triangles, partWay, Up::Z, "");
+    CHECK(partWay.str() == parts.str());
     CHECK(once.str().find("usemtl") == std::string::npos);
   }
   // Every card corner reads back as its own texture coordinate and normal through the shared vt and vn lines
@@ -834,7 +853,7 @@ TEST_CASE("OBJ of an asset in one pass: the same text as its parts in turn, over
   CHECK(vn.size() - barkVertices > 8192);
 
   std::ostringstream noCards, barkOnly;
-  writeObjAsset(bark, {}, {}, false, noCards, Up::Y, "");
+  writeObjAsset(bark, {}, std::vector<Leaf>{}, false, noCards, Up::Y, "");
   writeObj(bark, false, barkOnly, Up::Y);
   CHECK(noCards.str() == barkOnly.str());
 }

@@ -137,6 +137,13 @@ std::optional<Quad> joinTriangles(const Triangle& first, const Triangle& second)
 
 namespace {
 
+// Lines printed into a buffer of room for the longest ones, untouched past what was written (pages are touched only
+// as written).
+struct PrintedText {
+  std::unique_ptr<char[]> data;
+  std::size_t size = 0;
+};
+
 // Prints lines [begin, end) of one section at the pointer (at most kLineMax characters each), moving it past them.
 using LinePrinter = std::function<void(char*& out, std::size_t begin, std::size_t end)>;
 
@@ -154,12 +161,19 @@ struct ObjPart {
   std::string preamble;
   std::size_t count[4] = {0, 0, 0, 0};  // v, vt, vn, f
   LinePrinter print[4];
+  const std::vector<PrintedText>* printed[4] = {};  // a section's first lines, printed ahead of the writing in blocks
+  std::size_t printedLines[4] = {0, 0, 0, 0};        // how many lines those blocks hold
 };
 
 // The longest line: a quad's four v/vt/vn corners of 20-digit numbers; a v, vt or vn line, at most three floats of
 // at most 15 characters each.
 constexpr std::size_t kLineMax = 2 + 4 * (1 + 3 * 20 + 2) + 1;
 constexpr std::size_t kNumbersLineMax = 3 + 3 * (1 + 15) + 1;
+
+// Room for half a megabyte of a block's longest possible lines (10,700 number lines, 2,000 faces): buffers smaller
+// than a huge page, which is cleared whole when first touched however little of it is written.
+constexpr std::size_t kBlockBytes = std::size_t{512} << 10;
+constexpr std::size_t kBlockLines[2] = {kBlockBytes / kNumbersLineMax, kBlockBytes / kLineMax};  // numbers, faces
 
 // The parts in order. Printing the numbers is most of the work (a tree's OBJ is tens of megabytes): blocks of lines
 // are printed on every core in turn while this thread writes them out in file order, all parts in one pass (each
@@ -169,23 +183,20 @@ void writeParts(const std::vector<ObjPart>& parts, std::ostream& stream) {
     std::size_t part;
     int section;  // 0 v, 1 vt, 2 vn, 3 f
     std::size_t begin, end;
+    const PrintedText* ahead = nullptr;  // printed before the writing began
   };
-  // Room for half a megabyte of a block's longest possible lines (8,192 number lines, 2,000 faces): buffers smaller
-  // than a huge page, which is cleared whole when first touched however little of it is written.
-  constexpr std::size_t kBlockBytes = std::size_t{512} << 10;
   std::vector<Block> blocks;
   for (std::size_t part = 0; part < parts.size(); ++part)
     for (int section = 0; section < 4; ++section) {
-      const std::size_t lines = kBlockBytes / (section == 3 ? kLineMax : kNumbersLineMax);
-      for (std::size_t i = 0; i < parts[part].count[section]; i += lines)
+      if (const std::vector<PrintedText>* ahead = parts[part].printed[section])
+        for (const PrintedText& text : *ahead) blocks.push_back({part, section, 0, 0, &text});
+      const std::size_t lines = kBlockLines[section == 3 ? 1 : 0];
+      for (std::size_t i = parts[part].printedLines[section]; i < parts[part].count[section]; i += lines)
         blocks.push_back({part, section, i, std::min(parts[part].count[section], i + lines)});
     }
-  // A block's text: room for its longest possible lines, left uninitialised (pages are touched only as written).
-  struct Text {
-    std::unique_ptr<char[]> data;
-    std::size_t size = 0;
-  };
+  using Text = PrintedText;
   auto print = [&](const Block& b, Text& out) {
+    if (b.ahead) return;
     if (!out.data) out.data.reset(new char[kBlockBytes]);
     char* p = out.data.get();
     parts[b.part].print[b.section](p, b.begin, b.end);
@@ -237,7 +248,8 @@ void writeParts(const std::vector<ObjPart>& parts, std::ostream& stream) {
       out = std::move(text[i]);
     }
     preamblesUpTo(blocks[i].part);
-    stream.write(out.data.get(), static_cast<std::streamsize>(out.size));
+    const Text& lines = blocks[i].ahead ? *blocks[i].ahead : out;
+    stream.write(lines.data.get(), static_cast<std::streamsize>(lines.size));
     const std::lock_guard<std::mutex> lock(mutex);
     written = i + 1;
     spare.push_back(std::move(out));
@@ -342,16 +354,23 @@ ObjPart barkPart(const QuadMesh& mesh, bool triangles, Up up, const std::string&
   return part;
 }
 
-// The lines of cards, `count` of them, card(i) making card i (at least once while counting, again as printed).
-ObjPart cardsPart(std::size_t count, std::function<Card(std::size_t)> card, const std::string& object, const std::string& material,
-                  ObjCounts& before, Up up) {
-  struct Numbers {
-    Distinct<glm::vec2> texcoords;
-    Distinct<glm::vec3> normals;
-    std::vector<std::array<std::uint32_t, 4>> vt;  // per card corner
-    std::vector<std::uint32_t> vn;                 // per card: its corners share it
-  };
-  auto n = std::make_shared<Numbers>();
+// Cards' numbering (each distinct vt and vn once, per card corner) and the printers of their v, vt and vn lines: all
+// that does not depend on what precedes the cards in the file.
+struct CardNumbers {
+  Distinct<glm::vec2> texcoords;
+  Distinct<glm::vec3> normals;
+  std::vector<std::array<std::uint32_t, 4>> vt;  // per card corner
+  std::vector<std::uint32_t> vn;                 // per card: its corners share it
+};
+struct CardLines {
+  std::size_t count[3] = {0, 0, 0};  // v, vt, vn
+  std::shared_ptr<const CardNumbers> numbers;
+  LinePrinter print[3];
+};
+
+// The lines of cards, `count` of them, card(i) making card i (once while numbering, again as printed).
+CardLines cardLines(std::size_t count, std::function<Card(std::size_t)> card, Up up) {
+  auto n = std::make_shared<CardNumbers>();
   n->vt.resize(count);
   n->vn.resize(count);
   for (std::size_t i = 0; i < count; ++i) {
@@ -360,23 +379,38 @@ ObjPart cardsPart(std::size_t count, std::function<Card(std::size_t)> card, cons
     for (std::size_t k = 0; k < 4; ++k) n->vt[i][k] = n->texcoords.add(glm::vec2(c.texcoords[k].x, 1.0f - c.texcoords[k].y));
     n->vn[i] = n->normals.add(c.normal);
   }
-  ObjPart part;
-  part.preamble = "o " + object + "\n" + (material.empty() ? std::string() : "usemtl " + material + "\n");
-  part.count[0] = 4 * count;
-  part.count[1] = n->texcoords.values().size();
-  part.count[2] = n->normals.values().size();
-  part.count[3] = count;
-  part.print[0] = [card, up](char*& out, std::size_t begin, std::size_t end) {
+  CardLines lines;
+  lines.count[0] = 4 * count;
+  lines.count[1] = n->texcoords.values().size();
+  lines.count[2] = n->normals.values().size();
+  lines.numbers = n;
+  lines.print[0] = [card, up](char*& out, std::size_t begin, std::size_t end) {
     Card c{};
     for (std::size_t i = begin; i < end; ++i) {
       if (i == begin || i % 4 == 0) c = card(i / 4);
       appendAxes(out, "v", c.corners[i % 4], up);
     }
   };
-  part.print[1] = eachLine([n](char*& out, std::size_t i) { appendLine(out, "vt", {n->texcoords.values()[i].x, n->texcoords.values()[i].y}); });
-  part.print[2] = eachLine([n, up](char*& out, std::size_t i) { appendAxes(out, "vn", n->normals.values()[i], up); });
+  lines.print[1] = eachLine([n](char*& out, std::size_t i) { appendLine(out, "vt", {n->texcoords.values()[i].x, n->texcoords.values()[i].y}); });
+  lines.print[2] = eachLine([n, up](char*& out, std::size_t i) { appendAxes(out, "vn", n->normals.values()[i], up); });
+  return lines;
+}
+
+// The cards as a part of the file, numbered after `before`, which then counts their lines too; sections in
+// `printed` were printed ahead.
+ObjPart cardsPart(const CardLines& lines, const std::string& object, const std::string& material, ObjCounts& before,
+                  const std::array<std::vector<PrintedText>, 3>* printed = nullptr, const std::array<std::size_t, 3>& printedLines = {}) {
+  ObjPart part;
+  part.preamble = "o " + object + "\n" + (material.empty() ? std::string() : "usemtl " + material + "\n");
+  for (int section = 0; section < 3; ++section) {
+    part.count[section] = lines.count[section];
+    part.print[section] = lines.print[section];
+    part.printed[section] = printed ? &(*printed)[static_cast<std::size_t>(section)] : nullptr;
+    part.printedLines[section] = printedLines[static_cast<std::size_t>(section)];
+  }
+  part.count[3] = lines.numbers->vn.size();
   const ObjCounts at = before;
-  part.print[3] = eachLine([n, at](char*& out, std::size_t i) {
+  part.print[3] = eachLine([n = lines.numbers, at](char*& out, std::size_t i) {
     *out++ = 'f';
     for (std::size_t k = 0; k < 4; ++k) appendCorner(out, at.v + 4 * i + k, at.vt + n->vt[i][k], at.vn + n->vn[i]);
     *out++ = '\n';
@@ -385,6 +419,11 @@ ObjPart cardsPart(std::size_t count, std::function<Card(std::size_t)> card, cons
   before.vt += part.count[1];
   before.vn += part.count[2];
   return part;
+}
+
+ObjPart cardsPart(std::size_t count, std::function<Card(std::size_t)> card, const std::string& object, const std::string& material,
+                  ObjCounts& before, Up up) {
+  return cardsPart(cardLines(count, std::move(card), up), object, material, before);
 }
 
 // A CardMesh's cards as they stand: quad i has corners 4i to 4i + 3, all with one normal (leafCards and
@@ -431,8 +470,40 @@ void writeObjCards(const CardMesh& cards, const std::string& object, const std::
   writeParts({cardsPart(cards, object, material, before, up)}, stream);
 }
 
-void writeObjAsset(const QuadMesh& bark, const std::vector<ImpostorSegment>& branchSegments, const std::vector<Leaf>& leaves, bool triangles,
-                   std::ostream& stream, Up up, const std::string& mtlFile) {
+struct ObjLeafLines {
+  CardLines lines;
+  std::array<std::vector<PrintedText>, 3> printed;  // v, vt, vn: blocks of each section's first lines
+  std::array<std::size_t, 3> printedLines{};
+  Up up = Up::Y;
+};
+
+std::shared_ptr<const ObjLeafLines> printObjLeafLines(const std::vector<Leaf>& leaves, Up up, const std::function<bool()>& enough) {
+  auto ahead = std::make_shared<ObjLeafLines>();
+  ahead->up = up;
+  ahead->lines = cardLines(leaves.size(), [l = &leaves](std::size_t i) { return leafCard((*l)[i]); }, up);
+  // The numbering is needed whatever; the lines only while the caller has other work (the writer prints the rest on
+  // every core).
+  for (std::size_t section = 0; section < 3; ++section) {
+    const std::size_t count = ahead->lines.count[section];
+    for (std::size_t& at = ahead->printedLines[section]; at < count && !enough();) {
+      const std::size_t end = std::min(count, at + kBlockLines[0]);
+      PrintedText text;
+      text.data.reset(new char[kBlockBytes]);
+      char* p = text.data.get();
+      ahead->lines.print[section](p, at, end);
+      text.size = static_cast<std::size_t>(p - text.data.get());
+      ahead->printed[section].push_back(std::move(text));
+      at = end;
+    }
+  }
+  return ahead;
+}
+
+namespace {
+
+// The asset's parts: bark, then the fake branches' cards, then the leaves' (from `leaves`, or printed ahead).
+void writeAssetParts(const QuadMesh& bark, const std::vector<ImpostorSegment>& branchSegments, const std::vector<Leaf>& leaves,
+                     const ObjLeafLines* ahead, bool triangles, std::ostream& stream, Up up, const std::string& mtlFile) {
   std::vector<ObjPart> parts;
   parts.push_back(barkPart(bark, triangles, up, mtlFile));
   ObjCounts counts{bark.vertexCount(), bark.vertexCount(), bark.vertexCount()};
@@ -447,9 +518,28 @@ void writeObjAsset(const QuadMesh& bark, const std::vector<ImpostorSegment>& bra
   }
   // One card per leaf, made as it is printed (the willow's 250,000 were 52 MB).
   const std::vector<Leaf>* l = &leaves;  // the caller's leaves outlive the writing
-  if (!leaves.empty()) parts.push_back(cardsPart(leaves.size(), [l](std::size_t i) { return leafCard((*l)[i]); }, "leaves", materials ? "leaves" : "", counts, up));
+  if (ahead && ahead->lines.numbers->vn.size() > 0) {
+    parts.push_back(cardsPart(ahead->lines, "leaves", materials ? "leaves" : "", counts, &ahead->printed, ahead->printedLines));
+  } else if (!ahead && !leaves.empty()) {
+    parts.push_back(cardsPart(leaves.size(), [l](std::size_t i) { return leafCard((*l)[i]); }, "leaves", materials ? "leaves" : "", counts, up));
+  }
   writeParts(parts, stream);
 }
+
+}  // namespace
+
+void writeObjAsset(const QuadMesh& bark, const std::vector<ImpostorSegment>& branchSegments, const std::vector<Leaf>& leaves, bool triangles,
+                   std::ostream& stream, Up up, const std::string& mtlFile) {
+  writeAssetParts(bark, branchSegments, leaves, nullptr, triangles, stream, up, mtlFile);
+}
+
+void writeObjAsset(const QuadMesh& bark, const std::vector<ImpostorSegment>& branchSegments, const ObjLeafLines& leaves, bool triangles,
+                   std::ostream& stream, Up up, const std::string& mtlFile) {
+  if (leaves.up != up) throw std::invalid_argument("writeObjAsset: the leaves' lines were printed for the other up axis");
+  writeAssetParts(bark, branchSegments, {}, &leaves, triangles, stream, up, mtlFile);
+}
+
+
 
 std::string writeMtl(const std::string& barkColor, const std::string& barkNormal, const std::string& leafAtlas) {
   std::string out = "# Arbor tree materials\n";

@@ -4,6 +4,8 @@
 // A mesh vertex carries one position, one texture coordinate and one normal, so every face corner is "i/i/i";
 // cards share texture coordinates and normals between corners.
 #include <cstdint>
+#include <functional>
+#include <memory>
 #include <ostream>
 #include <string>
 #include <string_view>
@@ -48,6 +50,15 @@ void writeObjCards(const CardMesh& cards, const std::string& object, const std::
 // names when mtlFile is set; empty ones are left out): the same text as those calls in turn, printed in one pass on
 // every core, each card made as it is printed instead of all held at once.
 void writeObjAsset(const QuadMesh& bark, const std::vector<ImpostorSegment>& branchSegments, const std::vector<Leaf>& leaves,
+                   bool triangles, std::ostream& out, Up up, const std::string& mtlFile);
+
+// The leaves' numbering and the first of their lines that depend on nothing before them in the file (v, vt, vn),
+// printed ahead a block at a time until enough() says so: the tree file writer prints them on another core while the bark is meshed.
+// The leaves must outlive the writing (it prints the lines not printed ahead).
+struct ObjLeafLines;
+std::shared_ptr<const ObjLeafLines> printObjLeafLines(const std::vector<Leaf>& leaves, Up up, const std::function<bool()>& enough);
+// writeObjAsset with those lines (the same text); lines printed for the other up axis are refused (std::invalid_argument).
+void writeObjAsset(const QuadMesh& bark, const std::vector<ImpostorSegment>& branchSegments, const ObjLeafLines& leaves,
                    bool triangles, std::ostream& out, Up up, const std::string& mtlFile);
 // The .mtl for an OBJ of a tree asset: materials bark, branch_cards and leaves (alpha from the atlas), naming the
 // PNG files given (relative to the .mtl). Blender reads map_Bump as the normal map.

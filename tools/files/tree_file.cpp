@@ -1,5 +1,6 @@
 #include "tree_file.hpp"
 
+#include <atomic>
 #include <filesystem>
 #include <future>
 
@@ -49,9 +50,17 @@ void writeTreeFile(const std::string& path, const Skeleton& skeleton, const std:
     assetOptions.leaves = false;  // the OBJ writer makes the cards as it prints them
     assetOptions.branchCards = false;
   }
-  // The texture files are read while the tree is meshed.
+  // The texture files are read, and an OBJ's leaf lines printed, while the tree is meshed.
   std::future<AssetTextures> textures = std::async(std::launch::async, [&] { return options.textures ? exportTextures() : AssetTextures{}; });
+  const std::vector<Leaf> noLeaves;
+  std::atomic<bool> meshed{false};
+  std::future<std::shared_ptr<const ObjLeafLines>> leafLines;
+  if (obj) {
+    leafLines = std::async(std::launch::async,
+                           [&] { return printObjLeafLines(options.asset.leaves ? skeleton.leaves : noLeaves, options.file.up, [&] { return meshed.load(); }); });
+  }
   TreeAsset asset = makeTreeAsset(skeleton, name, assetOptions, std::move(finest), progress);
+  meshed = true;
   asset.textures = textures.get();
   if (progress) progress("writing " + path);
   if (!obj) {
@@ -73,12 +82,11 @@ void writeTreeFile(const std::string& path, const Skeleton& skeleton, const std:
     writeFileAtomically((folder / mtl).string(), writeMtl(color, normal, atlas));
   }
   const AssetLod& lod = asset.lods.front();
-  const std::vector<Leaf> noLeaves;
-  const std::vector<Leaf>& leaves = options.asset.leaves ? skeleton.leaves : noLeaves;
+  const std::shared_ptr<const ObjLeafLines> leaves = leafLines.get();
   // Stubs are never meshed, so their cards are there whatever the levels (wheat's grains).
   const std::vector<ImpostorSegment> segments =
       options.asset.branchCards ? leftOutSegments(skeleton, lod.meshedLevels, lod.fakedStems) : std::vector<ImpostorSegment>{};
-  writeFileAtomically(path, [&](std::ostream& out) { writeObjAsset(*lod.bark, segments, leaves, options.file.triangles, out, options.file.up, mtl); });
+  writeFileAtomically(path, [&](std::ostream& out) { writeObjAsset(*lod.bark, segments, *leaves, options.file.triangles, out, options.file.up, mtl); });
 }
 
 }  // namespace arbor
