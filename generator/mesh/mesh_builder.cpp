@@ -1306,16 +1306,16 @@ class Builder {
     return true;
   }
 
-  // The cross section between rings a and b at t (0..1): its corners on the band between them.
-  Ring between(int stem, const Ring& a, const Ring& b, double t) {
+  // The cross section between rings a and b at t (0..1): its corners on the band between them, moved by `shift`.
+  Ring between(int stem, const Ring& a, const Ring& b, double t, const Vec3& shift = Vec3(0.0)) {
     Ring r;
-    r.center = glm::mix(a.center, b.center, t);
+    r.center = glm::mix(a.center, b.center, t) + shift;
     r.radius = a.radius + (b.radius - a.radius) * t;
     r.tex = a.tex + (b.tex - a.tex) * t;
     r.frame = transportFrame(a.frame, directionOr(b.center - a.center, a.frame.T));
     const int level = sk_.stems[static_cast<std::size_t>(stem)].level;
     for (std::size_t k = 0; k < 4; ++k) {
-      r.v[k] = addVertex(glm::mix(position(a.v[k]), position(b.v[k]), t), r.radius, level, r.frame.T);
+      r.v[k] = addVertex(glm::mix(position(a.v[k]), position(b.v[k]), t) + shift, r.radius, level, r.frame.T);
       addUvw(r.v[k], static_cast<int>(k), r.tex);
     }
     out_.rings.push_back(MeshRing{stem, r.v, r.center, r.tex, r.radius, -1.0});
@@ -1323,7 +1323,7 @@ class Builder {
   }
 
   // Children attached along the neck leave through slabs cut out of its first band (from a to b), each where its
-  // attachment lies along that band: the band's surface stays as it was, and no child is moved along its parent.
+  // attachment lies along that band, bowed as the skeleton bows: no child is moved along its parent.
   void neckPorts(const NeckChildren& neck, const Ring& a, const Ring& b) {
     const Vec3 axis = b.center - a.center;
     const double len = std::max(glm::length(axis), 1e-12 * sk_.treeScale);
@@ -1379,13 +1379,18 @@ class Builder {
         groups.erase(groups.begin() + static_cast<std::ptrdiff_t>(j));
       }
     }
+    // The neck bows as its skeleton does between the two ends (a straight neck over a long, curved skeleton ran
+    // several radii off it, across its neighbours).
+    const StemPolyline poly(sk_, neck.stem);
+    const double sa = poly.nearestArc(a.center), sb = poly.nearestArc(b.center);
+    auto bow = [&](double t) { return poly.position(sa + (sb - sa) * t) - glm::mix(poly.position(sa), poly.position(sb), t); };
     Ring prev = a;
     for (const Group& g : groups) {
       const double mid = 0.5 * (g.lo + g.hi) / len;
-      const std::vector<int> joined = joinedHere(a.center + axis * mid, a.radius + (b.radius - a.radius) * mid, g.children);
+      const std::vector<int> joined = joinedHere(a.center + axis * mid + bow(mid), a.radius + (b.radius - a.radius) * mid, g.children);
       if (joined.empty()) continue;  // the band from prev runs on over the group's place
-      const Ring lo = between(neck.stem, a, b, g.lo / len);
-      const Ring hi = between(neck.stem, a, b, g.hi / len);
+      const Ring lo = between(neck.stem, a, b, g.lo / len, bow(g.lo / len));
+      const Ring hi = between(neck.stem, a, b, g.hi / len, bow(g.hi / len));
       band(prev, lo);
       connectingMoved_ = currentStart_ && !currentStart_->top;
       connect(neck.stem, g.node, lo, hi, joined, nullptr, false);

@@ -71,6 +71,21 @@ double StemPolyline::radius(double s) const {
 Vec3 StemPolyline::endDirection() const { return glm::normalize(p_.back() - p_[p_.size() - 2]); }
 Vec3 StemPolyline::startDirection() const { return glm::normalize(p_[1] - p_[0]); }
 
+double StemPolyline::nearestArc(const Vec3& point) const {
+  double best = 0.0, bestDistance = glm::distance(p_[0], point);
+  for (std::size_t i = 1; i < p_.size(); ++i) {
+    const Vec3 d = p_[i] - p_[i - 1];
+    const double len2 = glm::dot(d, d);
+    const double t = len2 > 0.0 ? std::clamp(glm::dot(point - p_[i - 1], d) / len2, 0.0, 1.0) : 0.0;
+    const double distance = glm::distance(p_[i - 1] + d * t, point);
+    if (distance < bestDistance) {
+      bestDistance = distance;
+      best = s_[i - 1] + t * (s_[i] - s_[i - 1]);
+    }
+  }
+  return best;
+}
+
 double StemPolyline::firstBeyond(const Vec3& from, double distance) const {
   if (glm::distance(p_[0], from) >= distance) return 0.0;
   for (std::size_t i = 1; i < p_.size(); ++i) {

@@ -21,6 +21,8 @@ class StemPolyline {
   int pointCount() const { return static_cast<int>(s_.size()); }
   double arcLength(int i) const { return s_[static_cast<std::size_t>(i)]; }
   int node(int i) const { return nodes_[static_cast<std::size_t>(i)]; }  // skeleton node of point i
+  // Arc length of the polyline's point nearest to `point` (the first, if several are as near).
+  double nearestArc(const Vec3& point) const;
   // Smallest arc length at which the polyline is `distance` away from `from` (its end if never).
   double firstBeyond(const Vec3& from, double distance) const;
   // Smallest arc length at which the polyline is `clearance` away from the line through `point` along
