@@ -1383,7 +1383,17 @@ class Builder {
     // several radii off it, across its neighbours).
     const StemPolyline poly(sk_, neck.stem);
     const double sa = poly.nearestArc(a.center), sb = poly.nearestArc(b.center);
-    auto bow = [&](double t) { return poly.position(sa + (sb - sa) * t) - glm::mix(poly.position(sa), poly.position(sb), t); };
+    auto bow = [&](double t) {
+      Vec3 shift = poly.position(sa + (sb - sa) * t) - glm::mix(poly.position(sa), poly.position(sb), t);
+      if (currentStart_) {
+        // Never towards the parent's axis (bowed inwards, the ABOP plants' necks met their parents' other children).
+        const Vec3 c = glm::mix(a.center, b.center, t) - currentStart_->branchPoint;
+        const Vec3 away = directionOr(c - currentStart_->parentAxis * glm::dot(c, currentStart_->parentAxis), Vec3(0.0));
+        const double in = glm::dot(shift, away);
+        if (in < 0.0) shift -= away * in;
+      }
+      return shift;
+    };
     Ring prev = a;
     for (const Group& g : groups) {
       const double mid = 0.5 * (g.lo + g.hi) / len;
