@@ -34,7 +34,7 @@ struct CardMesh {
 };
 
 // How much of its atlas cell's width each leaf kind's blade fills (LeafKind order); the cards are widened by
-// its inverse so the blade has the leaf's width. The same numbers as shaders/leaf.geom.
+// its inverse so the blade has the leaf's width. The same numbers as shaders/leaf.vert.
 constexpr std::array<float, 4> kLeafBladeShare{0.82f, 0.30f, 0.95f, 0.70f};
 
 // One flat card: corners counter-clockwise seen from the normal's side, texture coordinates in glTF's convention
