@@ -29,26 +29,31 @@ std::vector<TreeInstance> RenderSession::treeInstances() const {
 
 RenderSession::~RenderSession() { vkDeviceWaitIdle(context_.device()); }
 
-void RenderSession::recordFrame(VkCommandBuffer cmd, const Camera& camera, const RenderSettings& settings,
+void RenderSession::recordFrame(VkCommandBuffer cmd, const OffscreenTarget& target, const Camera& camera, const RenderSettings& settings,
                                 const std::vector<TreeInstance>& instances) {
-  renderer_.beginFrame(cmd, camera, target_.extent(), settings, instances);
+  renderer_.beginFrame(cmd, camera, target.extent(), settings, instances);
   std::array<VkClearValue, 3> clear{};
   clear[0].color = {{0.0f, 0.0f, 0.0f, 1.0f}};
   clear[1].depthStencil = {1.0f, 0};
   VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
-  begin.renderPass = target_.renderPass();
-  begin.framebuffer = target_.framebuffer();
-  begin.renderArea = {{0, 0}, target_.extent()};
+  begin.renderPass = target.renderPass();
+  begin.framebuffer = target.framebuffer();
+  begin.renderArea = {{0, 0}, target.extent()};
   begin.clearValueCount = static_cast<std::uint32_t>(clear.size());
   begin.pClearValues = clear.data();
   vkCmdBeginRenderPass(cmd, &begin, VK_SUBPASS_CONTENTS_INLINE);
-  renderer_.draw(cmd, target_.extent(), settings, instances);
+  renderer_.draw(cmd, target.extent(), settings, instances);
   vkCmdEndRenderPass(cmd);
 }
 
 std::vector<double> RenderSession::renderInFlight(const Camera& camera, const RenderSettings& settings, const std::vector<TreeInstance>& instances,
                                                   int frames, FrameResult& last) {
-  if (!frames_) frames_ = std::make_unique<vk::FrameRing>(context_, TreeRenderer::kFramesInFlight);
+  if (!frames_) {
+    frames_ = std::make_unique<vk::FrameRing>(context_, TreeRenderer::kFramesInFlight);
+    for (std::uint32_t slot = 1; slot < TreeRenderer::kFramesInFlight; ++slot) {
+      inFlightTargets_.push_back(std::make_unique<OffscreenTarget>(context_, target_.extent().width, target_.extent().height, target_.samples()));
+    }
+  }
   vkDeviceWaitIdle(context_.device());  // frames before this run were waited for one by one; start from a quiet device
   std::vector<double> intervals;
   auto previous = std::chrono::steady_clock::now();
@@ -61,7 +66,7 @@ std::vector<double> RenderSession::renderInFlight(const Camera& camera, const Re
       intervals.push_back(std::chrono::duration<double, std::milli>(now - previous).count());
       previous = now;
     }
-    recordFrame(frames_->begin(slot), camera, settings, instances);
+    recordFrame(frames_->begin(slot), slot == 0 ? target_ : *inFlightTargets_[slot - 1], camera, settings, instances);
     frames_->submit(slot);
   }
   for (int f = std::max(0, frames - static_cast<int>(TreeRenderer::kFramesInFlight)); f < frames; ++f) {
@@ -78,7 +83,7 @@ std::vector<double> RenderSession::renderInFlight(const Camera& camera, const Re
 FrameResult RenderSession::render(const Camera& camera, const RenderSettings& settings, const std::vector<TreeInstance>& instances) {
   const auto start = std::chrono::steady_clock::now();
   context_.submitAndWait([&](VkCommandBuffer cmd) {
-    recordFrame(cmd, camera, settings, instances);
+    recordFrame(cmd, target_, camera, settings, instances);
     target_.recordReadback(cmd);
   });
   FrameResult result;

@@ -44,11 +44,14 @@ class RenderSession {
   const vk::VulkanContext& context_;
   OffscreenTarget target_;
   TreeRenderer renderer_;
-  // beginFrame, then the render pass over the target with the renderer's draws.
-  void recordFrame(VkCommandBuffer cmd, const Camera& camera, const RenderSettings& settings, const std::vector<TreeInstance>& instances);
+  // beginFrame, then the render pass over `target` with the renderer's draws.
+  void recordFrame(VkCommandBuffer cmd, const OffscreenTarget& target, const Camera& camera, const RenderSettings& settings,
+                   const std::vector<TreeInstance>& instances);
 
   std::unique_ptr<GpuTree> tree_;
   std::unique_ptr<vk::FrameRing> frames_;  // made by the first renderInFlight
+  // Frames in flight each write an image of their own: slot 0 the target, the others these (made with the ring).
+  std::vector<std::unique_ptr<OffscreenTarget>> inFlightTargets_;
 };
 
 // The project's textures from assets/textures (made by `arbor textures`).
