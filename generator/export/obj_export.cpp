@@ -354,14 +354,14 @@ ObjPart barkPart(const QuadMesh& mesh, bool triangles, Up up, const std::string&
   return part;
 }
 
-// Cards' numbering (each distinct vt and vn once, per card corner) and the printers of their v, vt and vn lines: all
-// that does not depend on what precedes the cards in the file.
+// Cards' numbering: each distinct vt and vn once, and per card corner which.
 struct CardNumbers {
   Distinct<glm::vec2> texcoords;
   Distinct<glm::vec3> normals;
   std::vector<std::array<std::uint32_t, 4>> vt;  // per card corner
   std::vector<std::uint32_t> vn;                 // per card: its corners share it
 };
+// The cards' v, vt and vn lines: all that does not depend on what precedes the cards in the file.
 struct CardLines {
   std::size_t count[3] = {0, 0, 0};  // v, vt, vn
   std::shared_ptr<const CardNumbers> numbers;

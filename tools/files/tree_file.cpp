@@ -59,6 +59,10 @@ void writeTreeFile(const std::string& path, const Skeleton& skeleton, const std:
     leafLines = std::async(std::launch::async,
                            [&] { return printObjLeafLines(options.asset.leaves ? skeleton.leaves : noLeaves, options.file.up, [&] { return meshed.load(); }); });
   }
+  struct Meshed {
+    std::atomic<bool>& flag;
+    ~Meshed() { flag = true; }  // on an error too: the printer stops at its next block instead of printing them all
+  } meshedOnExit{meshed};
   TreeAsset asset = makeTreeAsset(skeleton, name, assetOptions, std::move(finest), progress);
   meshed = true;
   asset.textures = textures.get();
