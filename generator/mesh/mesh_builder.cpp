@@ -32,9 +32,9 @@ namespace {
 
 constexpr std::uint32_t kUnmade = 0xfffffff0u;  // indices of corners not emitted yet
 // A child's neck at least this many of its radii long (from its first ring to where its tube begins) gives ports
-// to its own children attached along it; on shorter ones they join the first slab (all trees at seeds 1-3: 12
-// radii 29,133 mesh-made pairs, 16 radii 31,900, any length 32,663).
-constexpr double kNeckPortsFrom = 12.0;
+// to its own children attached along it; on shorter ones they join the first slab (all trees at seeds 1-3, with
+// bowed necks: 8 radii 1,830 mesh-made pairs, 12 radii 1,889, 16 radii 1,884, 6 radii 1,903, 4 radii 2,577).
+constexpr double kNeckPortsFrom = 8.0;
 // A child attached farther from the neck's line than this many of its parent's radii joins the first slab: the
 // neck is not where its skeleton is (a grass's stalks left their box hub along necks 400 radii long).
 constexpr double kNeckReach = 20.0;
