@@ -33,6 +33,11 @@ Skeleton grow(const SpeciesParams& p, std::uint64_t seed, int levels = 0) {
   return generateSkeleton(p, o);
 }
 
+// One of the Arbaro species files (../shared/arbaro-species), by name without .xml, grown at a seed.
+Skeleton growSpeciesFile(const std::string& name, std::uint64_t seed) {
+  return grow(loadSpeciesFile(std::string(ARBOR_SPECIES_DIR) + "/" + name + ".xml"), seed);
+}
+
 std::vector<int> valences(const QuadMesh& mesh) {
   std::map<std::pair<std::uint32_t, std::uint32_t>, int> edges;
   for (const auto& q : mesh.quads)
@@ -386,7 +391,7 @@ TEST_CASE("a limb whose children leave through its long neck: the neck bows as i
     INFO(m.file);
     std::size_t meshMade = 0;
     for (std::uint64_t seed = 1; seed <= 3; ++seed) {
-      const Skeleton s = grow(loadSpeciesFile(std::string(ARBOR_SPECIES_DIR) + "/" + m.file + ".xml"), seed);
+      const Skeleton s = growSpeciesFile(m.file, seed);
       meshMade += checkSelfIntersections(buildTreeMesh(s), s).meshMade;
     }
     INFO(meshMade << " mesh-made pairs");
@@ -407,7 +412,7 @@ TEST_CASE("a grass's stalks leave a wide hub and meet their skeletons at one lev
     INFO(m.file);
     std::size_t pairs = 0;
     for (std::uint64_t seed = 1; seed <= 3; ++seed) {
-      const Skeleton s = grow(loadSpeciesFile(std::string(ARBOR_SPECIES_DIR) + "/" + m.file + ".xml"), seed);
+      const Skeleton s = growSpeciesFile(m.file, seed);
       const TreeMesh tree = buildTreeMesh(s);
       const MeshTopologyReport r = checkTopology(tree.mesh);
       CHECK(r.boundaryEdges == 0);
@@ -492,7 +497,7 @@ TEST_CASE("a short stem's split slab moves on until the band to it runs forwards
   // three radii off the skeleton, and a split slab that stopped looking after two radii fell back behind it.
   const std::vector<std::string> files = test::arbaroSpeciesFiles(ARBOR_SPECIES_DIR);
   if (files.empty()) return;  // arbaroSpeciesFiles said why
-  const Skeleton s = grow(loadSpeciesFile(std::string(ARBOR_SPECIES_DIR) + "/european_larch.xml"), 2);
+  const Skeleton s = growSpeciesFile("european_larch", 2);
   const TreeMesh tree = buildTreeMesh(s);
   // Per stem, its last cross section on the skeleton and the one before it; a split stem's is its split slab's.
   std::vector<int> lastOn(s.stems.size(), -1), before(s.stems.size(), -1);
@@ -523,7 +528,7 @@ TEST_CASE("twigs shallow and thin along their parent, or just before its split, 
   // Barley's awns leave their stalks at a few degrees; the CA black oak's twigs crowd its many splits.
   for (const char* name : {"barley", "ca_black_oak"}) {
     INFO(name);
-    const Skeleton s = grow(loadSpeciesFile(std::string(ARBOR_SPECIES_DIR) + "/" + name + ".xml"), 1);
+    const Skeleton s = growSpeciesFile(name, 1);
     const TreeMesh tree = buildTreeMesh(s);
     const std::set<int> faked(tree.fakedStems.begin(), tree.fakedStems.end());
     std::vector<bool> bears(s.stems.size(), false);  // a stem with a child, or one of whose clones has one

@@ -175,6 +175,14 @@ constexpr std::size_t kNumbersLineMax = 3 + 3 * (1 + 15) + 1;
 constexpr std::size_t kBlockBytes = std::size_t{512} << 10;
 constexpr std::size_t kBlockLines[2] = {kBlockBytes / kNumbersLineMax, kBlockBytes / kLineMax};  // numbers, faces
 
+// Lines [begin, end) of a section into `out`, given room for a block's longest lines the first time.
+void printBlock(const LinePrinter& print, std::size_t begin, std::size_t end, PrintedText& out) {
+  if (!out.data) out.data.reset(new char[kBlockBytes]);
+  char* p = out.data.get();
+  print(p, begin, end);
+  out.size = static_cast<std::size_t>(p - out.data.get());
+}
+
 // The parts in order. Printing the numbers is most of the work (a tree's OBJ is tens of megabytes): blocks of lines
 // are printed on every core in turn while this thread writes them out in file order, all parts in one pass (each
 // pass drains the cores at its end).
@@ -196,11 +204,7 @@ void writeParts(const std::vector<ObjPart>& parts, std::ostream& stream) {
     }
   using Text = PrintedText;
   auto print = [&](const Block& b, Text& out) {
-    if (b.ahead) return;
-    if (!out.data) out.data.reset(new char[kBlockBytes]);
-    char* p = out.data.get();
-    parts[b.part].print[b.section](p, b.begin, b.end);
-    out.size = static_cast<std::size_t>(p - out.data.get());
+    if (!b.ahead) printBlock(parts[b.part].print[b.section], b.begin, b.end, out);
   };
   std::size_t preambles = 0;  // parts whose preamble is out
   auto preamblesUpTo = [&](std::size_t part) {
@@ -487,12 +491,7 @@ std::shared_ptr<const ObjLeafLines> printObjLeafLines(const std::vector<Leaf>& l
     const std::size_t count = ahead->lines.count[section];
     for (std::size_t& at = ahead->printedLines[section]; at < count && !enough();) {
       const std::size_t end = std::min(count, at + kBlockLines[0]);
-      PrintedText text;
-      text.data.reset(new char[kBlockBytes]);
-      char* p = text.data.get();
-      ahead->lines.print[section](p, at, end);
-      text.size = static_cast<std::size_t>(p - text.data.get());
-      ahead->printed[section].push_back(std::move(text));
+      printBlock(ahead->lines.print[section], at, end, ahead->printed[section].emplace_back());
       at = end;
     }
   }
@@ -538,8 +537,6 @@ void writeObjAsset(const QuadMesh& bark, const std::vector<ImpostorSegment>& bra
   if (leaves.up != up) throw std::invalid_argument("writeObjAsset: the leaves' lines were printed for the other up axis");
   writeAssetParts(bark, branchSegments, {}, &leaves, triangles, stream, up, mtlFile);
 }
-
-
 
 std::string writeMtl(const std::string& barkColor, const std::string& barkNormal, const std::string& leafAtlas) {
   std::string out = "# Arbor tree materials\n";
