@@ -11,6 +11,8 @@
 #include <map>
 #include <numbers>
 #include <nlohmann/json.hpp>
+#include <filesystem>
+#include <sys/stat.h>
 
 #include <glm/geometric.hpp>
 
@@ -195,6 +197,46 @@ std::string writeTemp(const std::string& name, const std::string& content) {
 }
 
 }  // namespace
+
+// ---------------------------------------------------------------- files
+
+TEST_CASE("a file written atomically holds exactly what was streamed, with no blocks reserved past its end", "[export][file]") {
+  // Single characters, short runs and blocks larger than the sink's buffer, past several reservation steps.
+  std::string expected;
+  std::uint32_t state = 12345;
+  auto next = [&] { return state = state * 1664525u + 1013904223u; };
+  const std::string path = test::tempPath("streamed.bin");
+  writeFileAtomically(path, [&](std::ostream& out) {
+    while (expected.size() < (std::size_t{11} << 20)) {
+      const std::size_t n = next() % 3 == 0 ? 1 : next() % 2 == 0 ? next() % 300 : (std::size_t{1} << 20) + next() % 1000;
+      std::string piece(n, '\0');
+      for (char& c : piece) c = static_cast<char>(next() >> 24);
+      if (n == 1) out.put(piece[0]);
+      else out.write(piece.data(), static_cast<std::streamsize>(n));
+      expected += piece;
+    }
+  });
+  CHECK(readFile(path) == expected);
+  struct stat info {};
+  REQUIRE(::stat(path.c_str(), &info) == 0);
+  CHECK(static_cast<std::size_t>(info.st_size) == expected.size());
+  // Reservations come in steps of 4 MiB or more (the last here ends 1 MiB past the data): one left over shows.
+  CHECK(static_cast<std::size_t>(info.st_blocks) * 512 < expected.size() + (std::size_t{64} << 10));
+}
+
+TEST_CASE("a write that fails half-way leaves the old file as it was and no partial file", "[export][file]") {
+  const std::string path = writeTemp("kept.txt", "the old content");
+  const std::string big(std::size_t{6} << 20, 'x');
+  CHECK_THROWS_WITH(writeFileAtomically(path, [&](std::ostream& out) {
+                      out.write(big.data(), static_cast<std::streamsize>(big.size()));
+                      throw std::runtime_error("the writer gave up");
+                    }),
+                    "the writer gave up");
+  CHECK(readFile(path) == "the old content");
+  for (const auto& entry : std::filesystem::directory_iterator(std::filesystem::path(path).parent_path())) {
+    CHECK(entry.path().filename().string().rfind("kept.txt.partial-", 0) == std::string::npos);
+  }
+}
 
 // ---------------------------------------------------------------- OBJ
 
