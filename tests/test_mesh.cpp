@@ -99,7 +99,9 @@ TEST_CASE("the mesher's own crossings stay at or below what was measured for eve
   // direction: the willow 258 -> 139, the oak 68 -> 38; and the clone through its top likewise: the willow
   // 139 -> 106, the oak 38 -> 27; then long necks bowed with their skeletons, never towards the parent's axis: the
   // willow 106 -> 108, its necks 2 -> 4, for all trees' 1,980 -> 1,889 and the ABOP plants' 13,261 -> 11,383; then
-  // neck ports from necks 8 radii long, not 12: the poplar 22 -> 0, its necks 16 -> 4) plus a tenth: a
+  // neck ports from necks 8 radii long, not 12: the poplar 22 -> 0, its necks 16 -> 4; then a slab's first cross
+  // section moved on where its band ran back behind a collar standing off the skeleton: the tupelo 38 -> 2, its
+  // folds 1 -> 0) plus a tenth: a
   // change to the mesher that makes more fails here. Three seeds, not one: any change to a joint moves one tree's count by a
   // fifth either way (the exact clearance of a child's skeleton: the poplar's seed 1 went 138 -> 161, seed 2
   // 115 -> 103), the sum by a few percent.
@@ -107,7 +109,7 @@ TEST_CASE("the mesher's own crossings stay at or below what was measured for eve
     const char* preset;
     std::size_t meshMade, folds, necks;
   };
-  for (const Measured& m : {Measured{"black-tupelo", 38, 1, 0}, Measured{"ca-black-oak", 27, 0, 77},
+  for (const Measured& m : {Measured{"black-tupelo", 2, 0, 0}, Measured{"ca-black-oak", 27, 0, 77},
                             Measured{"lombardy-poplar", 0, 0, 4}, Measured{"palm", 34, 0, 0},
                             Measured{"quaking-aspen", 0, 0, 0}, Measured{"weeping-willow", 108, 0, 4}}) {
     INFO(m.preset);
@@ -382,12 +384,12 @@ TEST_CASE("a limb whose children leave through its long neck: the neck bows as i
   if (files.empty()) return;  // arbaroSpeciesFiles said why
   // Mesh-made pairs, seeds 1-3, plus a tenth. A straight neck ran up to four radii off a shallow limb's curved
   // skeleton, across the limbs beside it: the aspen file 346, the cottonwood 67; bowed (never towards the parent's
-  // axis), 291 and 25.
+  // axis), 291 and 25; then with a slab's first cross section kept ahead of the collar, 291 and 20.
   struct Measured {
     const char* file;
     std::size_t meshMade;
   };
-  for (const Measured& m : {Measured{"quaking_aspen", 291}, Measured{"eastern_cottonwood", 25}}) {
+  for (const Measured& m : {Measured{"quaking_aspen", 291}, Measured{"eastern_cottonwood", 20}}) {
     INFO(m.file);
     std::size_t meshMade = 0;
     for (std::uint64_t seed = 1; seed <= 3; ++seed) {

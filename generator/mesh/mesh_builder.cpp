@@ -1050,7 +1050,23 @@ class Builder {
       // A plain cross section the band to which would run backwards (the inside of a bend tighter than the radius)
       // is left out: the tube goes on to the next one (all trees' folds 1,584 -> 1,551, mesh-made pairs -0.7 %).
       if (role == -2 && !ringAhead(poly, last, s)) continue;
-      const Ring next = makeRing(stem, poly, last, s, role >= -1 ? slabNeed(slabs, s) : 0.0, false, slabAxis(poly, slabs, s, role));
+      // A slab's first cross section the band to which would run backwards (behind a collar standing off the
+      // skeleton, or where the slab's children attach before the tube begins) moves on within the slab until it
+      // runs forwards; failing that, a collar no port uses yet is the slab's first cross section itself. All trees
+      // at seeds 1-3: mesh-made pairs 1,830 -> 1,724, folds 19 -> 8 (any cross section as the slab's first: the
+      // same, but a vertex of a random branch graph then had valence 7 or 8).
+      double at = s;
+      if (role == -1 && !ringAhead(poly, last, s, slabNeed(slabs, s))) {
+        const auto slab = std::find_if(slabs.begin(), slabs.end(), [&](const Slab& x) { return x.lo == s; });
+        if (slab != slabs.end()) {
+          const double step = 0.1 * slab->need;
+          for (double a = s + step; a < slab->hi - 0.3 * slab->need && at == s; a += step) {
+            if (ringAhead(poly, last, a, slab->need)) at = a;
+          }
+          if (at == s && unused(last) && ringAhead(poly, last, slab->hi, slab->need)) continue;
+        }
+      }
+      const Ring next = makeRing(stem, poly, last, at, role >= -1 ? slabNeed(slabs, s) : 0.0, false, slabAxis(poly, slabs, s, role));
       if (role >= 0) connectSlab(stem, last, next, slabs[static_cast<std::size_t>(role)]);
       else band(last, next);
       last = next;
@@ -1069,6 +1085,11 @@ class Builder {
       return glm::normalize(chord);
     }
     return std::nullopt;
+  }
+
+  // A cross section none of whose corners is a port's yet.
+  bool unused(const Ring& r) const {
+    return std::all_of(r.v.begin(), r.v.end(), [&](std::uint32_t v) { return portUse_[v] == 0; });
   }
 
   // minRadius: a slab's cross sections must hold its children, even where the stem tapers to a point.
