@@ -101,7 +101,8 @@ TEST_CASE("the mesher's own crossings stay at or below what was measured for eve
   // willow 106 -> 108, its necks 2 -> 4, for all trees' 1,980 -> 1,889 and the ABOP plants' 13,261 -> 11,383; then
   // neck ports from necks 8 radii long, not 12: the poplar 22 -> 0, its necks 16 -> 4; then a slab's first cross
   // section moved on where its band ran back behind a collar standing off the skeleton: the tupelo 38 -> 2, its
-  // folds 1 -> 0) plus a tenth: a
+  // folds 1 -> 0; then twigs and twig-bearing branches inside a sibling clone faked: the willow 108 -> 88) plus a
+  // tenth: a
   // change to the mesher that makes more fails here. Three seeds, not one: any change to a joint moves one tree's count by a
   // fifth either way (the exact clearance of a child's skeleton: the poplar's seed 1 went 138 -> 161, seed 2
   // 115 -> 103), the sum by a few percent.
@@ -111,7 +112,7 @@ TEST_CASE("the mesher's own crossings stay at or below what was measured for eve
   };
   for (const Measured& m : {Measured{"black-tupelo", 2, 0, 0}, Measured{"ca-black-oak", 27, 0, 77},
                             Measured{"lombardy-poplar", 0, 0, 4}, Measured{"palm", 34, 0, 0},
-                            Measured{"quaking-aspen", 0, 0, 0}, Measured{"weeping-willow", 108, 0, 4}}) {
+                            Measured{"quaking-aspen", 0, 0, 0}, Measured{"weeping-willow", 88, 0, 4}}) {
     INFO(m.preset);
     std::size_t meshMade = 0, folds = 0, necks = 0, skeletonMade = 0;
     for (std::uint64_t seed : {1u, 2u, 3u}) {
@@ -524,11 +525,29 @@ TEST_CASE("a short stem's split slab moves on until the band to it runs forwards
   CHECK(backwards == 0);
 }
 
-TEST_CASE("twigs shallow and thin along their parent, or just before its split, are fake branches unless every stem is meshed", "[mesh][real-data]") {
+// The distance from p to a stem's skeleton (its attach node, then its own nodes), and the stem's radius there.
+std::pair<double, double> distanceToStem(const Skeleton& s, int stem, const glm::dvec3& p) {
+  const SkeletonStem& st = s.stems[static_cast<std::size_t>(stem)];
+  std::pair<double, double> best{1e300, 0.0};
+  int previous = st.attachNode;
+  for (int n = st.firstNode; n < st.firstNode + st.nodeCount; previous = n++) {
+    const SkeletonNode& a = s.nodes[static_cast<std::size_t>(previous)];
+    const SkeletonNode& b = s.nodes[static_cast<std::size_t>(n)];
+    const glm::dvec3 d = b.world.position - a.world.position;
+    const double t = glm::dot(d, d) > 0.0 ? std::clamp(glm::dot(p - a.world.position, d) / glm::dot(d, d), 0.0, 1.0) : 0.0;
+    const double distance = glm::length(a.world.position + t * d - p);
+    if (distance < best.first) best = {distance, b.startRadius + t * (b.radius - b.startRadius)};
+  }
+  return best;
+}
+
+TEST_CASE("twigs shallow and thin along their parent, just before its split or inside a sibling clone past it, are fake branches unless every stem is meshed", "[mesh][real-data]") {
   const std::vector<std::string> files = test::arbaroSpeciesFiles(ARBOR_SPECIES_DIR);
   if (files.empty()) return;  // arbaroSpeciesFiles said why
-  // Barley's awns leave their stalks at a few degrees; the CA black oak's twigs crowd its many splits.
-  for (const char* name : {"barley", "ca_black_oak"}) {
+  // Barley's awns leave their stalks at a few degrees; the CA black oak's twigs crowd its many splits, the desert
+  // bush's sit on clones still inside each other.
+  std::size_t insideSibling = 0;
+  for (const char* name : {"barley", "ca_black_oak", "desert_bush"}) {
     INFO(name);
     const Skeleton s = growSpeciesFile(name, 1);
     const TreeMesh tree = buildTreeMesh(s);
@@ -548,9 +567,18 @@ TEST_CASE("twigs shallow and thin along their parent, or just before its split, 
         split = split || (ahead >= 0.0 && ahead <= 4.0 * at.radius);
       }
       const bool thinShallow = parentClearance(s, static_cast<int>(i)) >= 6.0 * at.radius && st.startRadius <= 0.5 * at.radius;
+      // Past the split: the parent is a clone, and another clone of its source is nearer than the two radii.
+      bool inside = false;
+      const SkeletonStem& parent = s.stems[static_cast<std::size_t>(st.parentStem)];
+      for (std::size_t c = 0; c < s.stems.size() && parent.cloneOf >= 0; ++c) {
+        if (static_cast<int>(c) == st.parentStem || s.stems[c].cloneOf != parent.cloneOf || s.stems[c].stub) continue;
+        const auto [distance, radius] = distanceToStem(s, static_cast<int>(c), at.world.position);
+        inside = inside || distance < 0.999 * (radius + at.radius);
+      }
       shallow += thinShallow ? 1 : 0;
       beforeSplit += split ? 1 : 0;
-      if (thinShallow || split) CHECK(faked.count(static_cast<int>(i)) == 1);
+      insideSibling += inside ? 1 : 0;
+      if (thinShallow || split || inside) CHECK(faked.count(static_cast<int>(i)) == 1);
     }
     CHECK(shallow + beforeSplit > 20);
     MeshOptions all;
@@ -560,4 +588,5 @@ TEST_CASE("twigs shallow and thin along their parent, or just before its split, 
     const MeshTopologyReport r = checkTopology(meshed.mesh);
     CHECK((r.boundaryEdges == 0 && r.nonManifoldEdges == 0 && r.components == 1));
   }
+  CHECK(insideSibling > 10);
 }

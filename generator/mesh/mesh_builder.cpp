@@ -1270,21 +1270,44 @@ class Builder {
   //   begin past its tip, or its split slab lie in its parent's side;
   // - it is shallow and thin: its neck would run along its parent's side across its neighbours' necks (barley's
   //   awns, the willows' hanging twigs);
-  // - it attaches just before its parent splits: the clones leaving the split slab's sides ran over it.
+  // - it attaches just before its parent splits: the clones leaving the split slab's sides ran over it;
+  // - it attaches to a clone just past the split, inside another clone's wood (the desert bush's twigs); so does
+  //   a branch off a limb bearing only twigs.
   bool unjoinableTwig(int stem) const {
     const SkeletonStem& st = sk_.stems[static_cast<std::size_t>(stem)];
-    if (!opt_.fakeDisplaced || st.parentStem < 0 || st.cloneOf >= 0 || branching_[static_cast<std::size_t>(stem)]) return false;
-    const double clearance = parentClearance(sk_, stem);
+    if (!opt_.fakeDisplaced || st.parentStem < 0 || st.cloneOf >= 0) return false;
     const SkeletonNode& at = sk_.nodes[static_cast<std::size_t>(st.attachNode)];
+    if (branching_[static_cast<std::size_t>(stem)]) {
+      return st.level >= 2 && bearsTwigsOnly(stem) && insideSiblingClone(st.parentStem, at.world.position, at.radius);
+    }
+    const double clearance = parentClearance(sk_, stem);
     if (clearance >= StemPolyline(sk_, stem).length() ||
         (clearance >= kShallowFrom * at.radius && st.startRadius <= kThinTwig * at.radius)) {
       return true;
     }
     const auto& splits = clones_[static_cast<std::size_t>(st.parentStem)];
-    return std::any_of(splits.begin(), splits.end(), [&](int c) {
-      const double ahead = sk_.nodes[static_cast<std::size_t>(sk_.stems[static_cast<std::size_t>(c)].attachNode)].offset - at.offset;
-      return ahead >= 0.0 && ahead <= kBeforeSplit * at.radius;
-    });
+    if (std::any_of(splits.begin(), splits.end(), [&](int c) {
+          const double ahead = sk_.nodes[static_cast<std::size_t>(sk_.stems[static_cast<std::size_t>(c)].attachNode)].offset - at.offset;
+          return ahead >= 0.0 && ahead <= kBeforeSplit * at.radius;
+        })) {
+      return true;
+    }
+    return insideSiblingClone(st.parentStem, at.world.position, at.radius);
+  }
+
+  // Whether a twig attached at `point` on `clone`, whose radius is `radius` there, would join it inside another clone
+  // split from the same stem: just past a split the clones overlap, and where the other's axis is nearer than the two
+  // radii the twig's joint on its parent's surface lies in that clone's wood.
+  bool insideSiblingClone(int clone, const Vec3& point, double radius) const {
+    const int source = sk_.stems[static_cast<std::size_t>(clone)].cloneOf;
+    if (source < 0) return false;
+    for (int c : clones_[static_cast<std::size_t>(source)]) {
+      if (c == clone) continue;
+      const StemPolyline poly(sk_, c);
+      const double s = poly.nearestArc(point);
+      if (glm::distance(poly.position(s), point) < poly.radius(s) + radius) return true;
+    }
+    return false;
   }
 
   // A twig, or a twig-bearing branch, with the clones it splits into and its children (never built: they would have
