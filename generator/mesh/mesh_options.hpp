@@ -26,8 +26,9 @@ struct MeshOptions {
   // attaches (where the parent has no tube yet, inside or against its own parent) is drawn, with its clones and
   // twigs, as fake branches on its skeleton (TreeMesh::fakedStems), as is a twig whose wood never clears its
   // parent's, or clears it only six parent radii along while at most half its parent's radius thick, or attaches at
-  // most four parent radii before its parent splits, or whose first ring a pass left more than 1.5 parent radii
-  // along (the tree is meshed again without it); off: meshed from that far slab, however far it is.
+  // most four parent radii before its parent splits, or attaches to a clone inside another clone of the same source
+  // (as does such a branch), or whose first ring a pass left more than 1.5 parent radii along (the tree is meshed
+  // again without it); off: meshed from that far slab, however far it is.
   bool fakeDisplaced = true;
 };
 
