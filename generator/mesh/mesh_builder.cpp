@@ -1083,16 +1083,8 @@ class Builder {
         }
       }
       const Ring next = makeRing(stem, poly, last, at, role >= -1 ? slabNeed(slabs, s) : 0.0, false, slabAxis(poly, slabs, s, role));
-      if (role >= 0 && role == topSlab) {
-        const Slab& slab = slabs[static_cast<std::size_t>(role)];
-        const std::vector<int> children = slab.moved ? joinedHere(last, next, slab.children) : slab.children;
-        if (!children.empty()) {
-          connect(stem, slab.node, last, next, children, &next, false);
-          return;
-        }
-      }
-      if (role >= 0) connectSlab(stem, last, next, slabs[static_cast<std::size_t>(role)]);
-      else band(last, next);
+      if (role < 0) band(last, next);
+      else if (connectSlab(stem, last, next, slabs[static_cast<std::size_t>(role)], role == topSlab)) return;
       last = next;
       previousS = s;
     }
@@ -1245,12 +1237,15 @@ class Builder {
     out_.joints.push_back(std::move(joint));
   }
 
-  void connectSlab(int stem, const Ring& lo, const Ring& hi, const Slab& slab) {
+  // throughTop: the slab's top goes to its child most aligned with the stem, which ends there; returns whether it
+  // did (the slab had a child to give it to).
+  bool connectSlab(int stem, const Ring& lo, const Ring& hi, const Slab& slab, bool throughTop = false) {
     connectingMoved_ = slab.moved && currentStart_ && !currentStart_->top;
     const std::vector<int> children = slab.moved ? joinedHere(lo, hi, slab.children) : slab.children;
     if (children.empty()) band(lo, hi);
-    else connect(stem, slab.node, lo, hi, children, nullptr, false);
+    else connect(stem, slab.node, lo, hi, children, throughTop ? &hi : nullptr, false);
     connectingMoved_ = false;
+    return throughTop && !children.empty();
   }
 
   // Of the children moved to a connection centred at `center` on a parent of radius ra there, those it joins. A
