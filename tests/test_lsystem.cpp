@@ -16,6 +16,8 @@
 #include "growth/lsystem/lsystem_svg.hpp"
 #include "growth/lsystem/turtle.hpp"
 #include "mesh/mesh_checks.hpp"
+#include "mesh/stem_capsules.hpp"
+#include "mesh/stem_polyline.hpp"
 #include "mesh/tree_mesh.hpp"
 #include "manifold_checks.hpp"
 #include "test_support.hpp"
@@ -263,6 +265,36 @@ TEST_CASE("every preset parses, derives, draws and meshes to a closed quad manif
       CHECK_THAT(test::refusal([&] { writeLsystemSvg(system); }), Catch::Contains("out of the plane"));
     }
   }
+}
+
+TEST_CASE("a meshed stem with no meshed child clears its parent's wood before it ends", "[lsystem][mesh]") {
+  // ABOP's plants have trunks far thicker than their short branches: a branch inside its trunk to its end whose own
+  // branches are all fake branches is one too (meshed, a collar far up the trunk and a tube folding back down).
+  std::size_t twigs = 0, buried = 0;
+  for (const auto& path : presetFiles()) {
+    INFO(path.filename().string());
+    const TreeModel model = readLsystemModel(readFile(path.string()), path.string());
+    const Skeleton s = model.grow({});
+    const TreeMesh tree = buildTreeMesh(s);
+    std::vector<bool> faked(s.stems.size(), false), bears(s.stems.size(), false);
+    for (int f : tree.fakedStems) faked[static_cast<std::size_t>(f)] = true;
+    for (std::size_t i = 0; i < s.stems.size(); ++i) {
+      const SkeletonStem& st = s.stems[i];
+      if (faked[i] || st.stub || st.cloneOf >= 0) continue;
+      for (int x = st.parentStem; x >= 0; x = s.stems[static_cast<std::size_t>(x)].cloneOf) bears[static_cast<std::size_t>(x)] = true;
+    }
+    for (std::size_t i = 0; i < s.stems.size(); ++i) {
+      const SkeletonStem& st = s.stems[i];
+      if (st.parentStem < 0 || st.cloneOf >= 0 || st.stub || bears[i]) continue;
+      const bool inside = parentClearance(s, static_cast<int>(i)) >= StemPolyline(s, static_cast<int>(i)).length();
+      buried += inside ? 1 : 0;
+      if (faked[i]) continue;
+      ++twigs;
+      CHECK_FALSE(inside);
+    }
+  }
+  CHECK(twigs > 100);
+  CHECK(buried > 100);  // the rule has work to do on these plants
 }
 
 TEST_CASE("the l-system model's parameters edit the grammar and re-derive", "[lsystem]") {

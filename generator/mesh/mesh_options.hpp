@@ -28,7 +28,8 @@ struct MeshOptions {
   // parent's, or clears it only six parent radii along while at most half its parent's radius thick, or attaches at
   // most four parent radii before its parent splits, or attaches to a clone inside another clone of the same source
   // (as does such a branch), or whose first ring a pass left more than 1.5 parent radii along (the tree is meshed
-  // again without it); off: meshed from that far slab, however far it is.
+  // again without it); a stem whose children are all faked is a twig, faked where its wood never clears its
+  // parent's; off: meshed from that far slab, however far it is.
   bool fakeDisplaced = true;
 };
 
