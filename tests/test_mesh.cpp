@@ -103,7 +103,7 @@ TEST_CASE("the mesher's own crossings stay at or below what was measured for eve
   // neck ports from necks 8 radii long, not 12: the poplar 22 -> 0, its necks 16 -> 4; then a slab's first cross
   // section moved on where its band ran back behind a collar standing off the skeleton: the tupelo 38 -> 2, its
   // folds 1 -> 0; then twigs and twig-bearing branches inside a sibling clone faked: the willow 108 -> 88) plus a
-  // tenth; then a child running on along its parent leaving through the top of its last slab: the palm 34 -> 16): a
+  // tenth; then a child running on along its parent leaving through the top of its last slab: the palm 34 -> 15): a
   // change to the mesher that makes more fails here. Three seeds, not one: any change to a joint moves one tree's count by a
   // fifth either way (the exact clearance of a child's skeleton: the poplar's seed 1 went 138 -> 161, seed 2
   // 115 -> 103), the sum by a few percent.
@@ -112,7 +112,7 @@ TEST_CASE("the mesher's own crossings stay at or below what was measured for eve
     std::size_t meshMade, folds, necks;
   };
   for (const Measured& m : {Measured{"black-tupelo", 2, 0, 0}, Measured{"ca-black-oak", 27, 0, 77},
-                            Measured{"lombardy-poplar", 0, 0, 4}, Measured{"palm", 16, 0, 0},
+                            Measured{"lombardy-poplar", 0, 0, 4}, Measured{"palm", 15, 0, 0},
                             Measured{"quaking-aspen", 0, 0, 0}, Measured{"weeping-willow", 88, 0, 4}}) {
     INFO(m.preset);
     std::size_t meshMade = 0, folds = 0, necks = 0, skeletonMade = 0;

@@ -59,7 +59,8 @@ constexpr double kFarChild = 1.5;
 constexpr double kSlabTurn = 0.866;
 // A stem's last slab at most this many of its radii before its tip gives its top to the child most aligned with the
 // stem, where that child runs within 25 degrees of it (cosine 0.9): the stem ends there. Tails of 2 or 3 radii and
-// 37 or 45 degrees gave the same counts but for the cottonwood file (3 radii: 20 -> 28).
+// 37 or 45 degrees gave the same counts but for the cottonwood file (3 radii: 20 -> 28), measured before the children
+// beside it kept their clearance.
 constexpr double kTopTail = 1.5;
 constexpr double kTopAligned = 0.9;
 // Passes of faking the twigs an earlier pass left past kFarChild.
