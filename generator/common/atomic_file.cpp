@@ -12,7 +12,6 @@
 #include <mutex>
 #include <sstream>
 #include <stdexcept>
-#include <sys/stat.h>
 #include <unistd.h>
 #include <vector>
 

@@ -10,6 +10,7 @@
 #include <numbers>
 #include <optional>
 #include <stdexcept>
+#include <utility>
 
 #include "common/input_error.hpp"
 #include "common/text_util.hpp"
@@ -126,11 +127,12 @@ class Builder {
     // either, it is one too, and so on down (an ABOP plant's branches inside its thick trunk: fig-1-24a's mesh-made
     // pairs 378 -> 0, its bumps on the trunk gone, the fake branches standing in). Only this rule cascades: all of the
     // twig rules took the whole weeping willow preset (its hanging twigs shallow, then their branches, then limbs).
+    // Only stems that lost their last meshed child are looked at again: the rest were judged as twigs above.
     for (std::size_t faked = 0; faked != out_.fakedStems.size();) {
       faked = out_.fakedStems.size();
-      branching_ = bearingStems();
+      const std::vector<bool> before = std::exchange(branching_, bearingStems());
       for (std::size_t i = 0; i < sk_.stems.size(); ++i) {
-        if (meshed(static_cast<int>(i)) && !faked_[i] && buried(static_cast<int>(i), branching_)) fakeTwig(static_cast<int>(i));
+        if (before[i] && meshed(static_cast<int>(i)) && !faked_[i] && buried(static_cast<int>(i), branching_)) fakeTwig(static_cast<int>(i));
       }
     }
     for (std::size_t i = 0; i < sk_.stems.size(); ++i) {
@@ -1293,7 +1295,7 @@ class Builder {
     // never clears their parent's (the ABOP plants' mesh-made pairs 8,500 -> 7,001 at seeds 1-3).
     const std::vector<bool> bearing = bearingStems();
     for (std::size_t i = 0; i < sk_.stems.size(); ++i) {
-      if (meshed(static_cast<int>(i)) && !faked_[i] && buried(static_cast<int>(i), bearing)) far.push_back(static_cast<int>(i));
+      if (branching_[i] && meshed(static_cast<int>(i)) && !faked_[i] && buried(static_cast<int>(i), bearing)) far.push_back(static_cast<int>(i));
     }
     std::sort(far.begin(), far.end());
     far.erase(std::unique(far.begin(), far.end()), far.end());
