@@ -82,6 +82,7 @@ struct PortStart {
   bool top = false;   // the parent's top cross section (a split or a sub-box): leave along the child
   Vec3 parentAxis{0.0};     // the slab's axis: a side child's tube starts once clear of the parent
   double parentReach = 0.0; // distance of the parent's corners from that axis
+  double parentEnd = 1e300; // where the parent's skeleton ends along that axis, from branchPoint (never, past a split)
   double slabReach = 0.0;   // the same for every port, also past a split and on the hub (where parentReach is 0)
   std::size_t parentFacesBegin = 0, parentFacesEnd = 0;  // the parent stem's quads, complete by then
   // A child attached before its parent's tube begins (moved to the first slab) also clears its grandparent.
@@ -400,7 +401,7 @@ class Builder {
       // Best: the collar ends on the child's own skeleton where it has cleared the parent, so its tube, and
       // the slabs of its own children, begin where the skeleton leaves the parent.
       const double reach = std::sqrt(0.5) * start.parentReach + placedRadius * opt_.limitCompensation;
-      const double s = std::max(poly.firstClearOf(start.branchPoint, start.parentAxis, reach), grandClearance(poly, start, placedRadius));
+      const double s = std::max(poly.firstClearOf(start.branchPoint, start.parentAxis, reach, start.parentEnd + reach), grandClearance(poly, start, placedRadius));
       const Vec3 c = poly.position(s);
       // Only where that is close to the attachment: a child leaving at a shallow angle keeps its collar there.
       const double along = std::abs(glm::dot(c - start.branchPoint, start.parentAxis));
@@ -674,7 +675,7 @@ class Builder {
     if (!start.top && sk_.stems[static_cast<std::size_t>(stem)].cloneOf < 0) {
       // A child at a small angle runs along its parent; its tube begins where its skeleton has left the parent.
       const double clearance = std::sqrt(0.5) * start.parentReach + rc * opt_.limitCompensation;
-      s = std::max(s, poly.firstClearOf(start.branchPoint, start.parentAxis, clearance));
+      s = std::max(s, poly.firstClearOf(start.branchPoint, start.parentAxis, clearance, start.parentEnd + clearance));
     }
     return std::max(s, grandClearance(poly, start, rc));
   }
@@ -1226,10 +1227,12 @@ class Builder {
       ports.emplace_back(q, std::move(stems));
     }
     const Vec3 branchPoint = joint.center;
+    const double parentEnd = endAlong(parentStem, branchPoint, axis);
     const double slabReach = std::max(lo.radius, hi.radius) * opt_.limitCompensation;
     auto portStart = [&](const std::array<std::uint32_t, 4>& q, bool onTop, double reach) {
       PortStart p{q, branchPoint, onTop, axis, reach};
       p.slabReach = slabReach;
+      p.parentEnd = parentEnd;
       p.tex = portTex(q);
       return withGrandparent(p);
     };
@@ -1511,6 +1514,15 @@ class Builder {
       prev = hi;
     }
     band(prev, b);
+  }
+
+  // How far along `axis` from `from` a stem's skeleton ends; never where clones or children run on from its tip.
+  double endAlong(int stem, const Vec3& from, const Vec3& axis) const {
+    if (stem < 0) return 1e300;  // the root hub
+    const SkeletonStem& st = sk_.stems[static_cast<std::size_t>(stem)];
+    const auto lastNode = static_cast<std::size_t>(st.firstNode + st.nodeCount - 1);
+    if (!stemsAt_[lastNode].empty()) return 1e300;
+    return glm::dot(sk_.nodes[lastNode].world.position - from, axis);
   }
 
   // A moved child's skeleton starts where its parent is still beside the grandparent: it must clear that too.

@@ -100,7 +100,7 @@ double StemPolyline::firstBeyond(const Vec3& from, double distance) const {
   return length();
 }
 
-double StemPolyline::firstClearOf(const Vec3& point, const Vec3& axis, double clearance) const {
+double StemPolyline::firstClearOf(const Vec3& point, const Vec3& axis, double clearance, double beyond) const {
   // Along an edge the squared distance from the axis is a quadratic in the edge's parameter t, so the first edge
   // to reach `clearance` gives the crossing exactly (marching in steps of a third of it, then bisecting, was a
   // tenth of a large tree's mesh time: children running along their parent never cleared it).
@@ -108,13 +108,13 @@ double StemPolyline::firstClearOf(const Vec3& point, const Vec3& axis, double cl
   for (std::size_t i = 1; i < p_.size(); ++i) {
     const Vec3 a = p_[i - 1] - point, e = p_[i] - p_[i - 1];
     const Vec3 across = a - axis * glm::dot(a, axis), grows = e - axis * glm::dot(e, axis);
-    const double aa = glm::dot(across, across) - c2;
-    if (aa >= 0.0) return s_[i - 1];
+    const double aa = glm::dot(across, across) - c2, along = glm::dot(a, axis), rises = glm::dot(e, axis);
+    if (aa >= 0.0 || along >= beyond) return s_[i - 1];
     // f(t) = |grows|^2 t^2 + 2 (across . grows) t + aa, negative at 0: its larger root, in the cancellation-free form.
     const double ab = glm::dot(across, grows), disc = ab * ab - glm::dot(grows, grows) * aa;
     const double denominator = ab + std::sqrt(std::max(disc, 0.0));
-    if (denominator <= 0.0) continue;
-    const double t = -aa / denominator;
+    double t = denominator > 0.0 ? -aa / denominator : 2.0;
+    if (rises > 0.0) t = std::min(t, (beyond - along) / rises);  // past the end along the axis: linear in t
     if (t <= 1.0) return s_[i - 1] + t * (s_[i] - s_[i - 1]);
   }
   return length();

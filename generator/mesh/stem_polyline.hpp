@@ -26,8 +26,8 @@ class StemPolyline {
   // Smallest arc length at which the polyline is `distance` away from `from` (its end if never).
   double firstBeyond(const Vec3& from, double distance) const;
   // Smallest arc length at which the polyline is `clearance` away from the line through `point` along
-  // `axis` (its end if never).
-  double firstClearOf(const Vec3& point, const Vec3& axis, double clearance) const;
+  // `axis`, or `beyond` along that axis past `point` (its end if never).
+  double firstClearOf(const Vec3& point, const Vec3& axis, double clearance, double beyond = 1e300) const;
 
  private:
   std::size_t edgeAt(double s) const;  // index i of the edge from point i-1 to point i (i >= 1)
