@@ -103,7 +103,8 @@ TEST_CASE("the mesher's own crossings stay at or below what was measured for eve
   // neck ports from necks 8 radii long, not 12: the poplar 22 -> 0, its necks 16 -> 4; then a slab's first cross
   // section moved on where its band ran back behind a collar standing off the skeleton: the tupelo 38 -> 2, its
   // folds 1 -> 0; then twigs and twig-bearing branches inside a sibling clone faked: the willow 108 -> 88) plus a
-  // tenth; then a child running on along its parent leaving through the top of its last slab: the palm 34 -> 15): a
+  // tenth; then a child running on along its parent leaving through the top of its last slab: the palm 34 -> 15; then
+  // twigs inside a sibling clone's cage, not only its skeleton radius, faked: the willow 88 -> 73, the oak 27 -> 25): a
   // change to the mesher that makes more fails here. Three seeds, not one: any change to a joint moves one tree's count by a
   // fifth either way (the exact clearance of a child's skeleton: the poplar's seed 1 went 138 -> 161, seed 2
   // 115 -> 103), the sum by a few percent.
@@ -111,9 +112,9 @@ TEST_CASE("the mesher's own crossings stay at or below what was measured for eve
     const char* preset;
     std::size_t meshMade, folds, necks;
   };
-  for (const Measured& m : {Measured{"black-tupelo", 2, 0, 0}, Measured{"ca-black-oak", 27, 0, 77},
+  for (const Measured& m : {Measured{"black-tupelo", 2, 0, 0}, Measured{"ca-black-oak", 25, 0, 77},
                             Measured{"lombardy-poplar", 0, 0, 4}, Measured{"palm", 15, 0, 0},
-                            Measured{"quaking-aspen", 0, 0, 0}, Measured{"weeping-willow", 88, 0, 4}}) {
+                            Measured{"quaking-aspen", 0, 0, 0}, Measured{"weeping-willow", 73, 0, 4}}) {
     INFO(m.preset);
     std::size_t meshMade = 0, folds = 0, necks = 0, skeletonMade = 0;
     for (std::uint64_t seed : {1u, 2u, 3u}) {
@@ -619,13 +620,13 @@ TEST_CASE("twigs shallow and thin along their parent, just before its split or i
         split = split || (ahead >= 0.0 && ahead <= 4.0 * at.radius);
       }
       const bool thinShallow = parentClearance(s, static_cast<int>(i)) >= 6.0 * at.radius && st.startRadius <= 0.5 * at.radius;
-      // Past the split: the parent is a clone, and another clone of its source is nearer than the two radii.
+      // Past the split: the parent is a clone, and another clone of its source is nearer than the two cages reach.
       bool inside = false;
       const SkeletonStem& parent = s.stems[static_cast<std::size_t>(st.parentStem)];
       for (std::size_t c = 0; c < s.stems.size() && parent.cloneOf >= 0; ++c) {
         if (static_cast<int>(c) == st.parentStem || s.stems[c].cloneOf != parent.cloneOf || s.stems[c].stub) continue;
         const auto [distance, radius] = distanceToStem(s, static_cast<int>(c), at.world.position);
-        inside = inside || distance < 0.999 * (radius + at.radius);
+        inside = inside || distance < 0.999 * (radius + at.radius) * MeshOptions{}.limitCompensation;
       }
       shallow += thinShallow ? 1 : 0;
       beforeSplit += split ? 1 : 0;

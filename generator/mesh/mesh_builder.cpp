@@ -1359,7 +1359,7 @@ class Builder {
 
   // Whether a twig attached at `point` on `clone`, whose radius is `radius` there, would join it inside another clone
   // split from the same stem: just past a split the clones overlap, and where the other's axis is nearer than the two
-  // radii the twig's joint on its parent's surface lies in that clone's wood.
+  // cages' reach (the radii times limitCompensation) the twig's joint on its parent's cage lies in that clone's cage.
   bool insideSiblingClone(int clone, const Vec3& point, double radius) const {
     const int source = sk_.stems[static_cast<std::size_t>(clone)].cloneOf;
     if (source < 0) return false;
@@ -1367,7 +1367,7 @@ class Builder {
       if (c == clone) continue;
       const StemPolyline poly(sk_, c);
       const double s = poly.nearestArc(point);
-      if (glm::distance(poly.position(s), point) < poly.radius(s) + radius) return true;
+      if (glm::distance(poly.position(s), point) < (poly.radius(s) + radius) * opt_.limitCompensation) return true;
     }
     return false;
   }
