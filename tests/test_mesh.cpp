@@ -104,7 +104,8 @@ TEST_CASE("the mesher's own crossings stay at or below what was measured for eve
   // section moved on where its band ran back behind a collar standing off the skeleton: the tupelo 38 -> 2, its
   // folds 1 -> 0; then twigs and twig-bearing branches inside a sibling clone faked: the willow 108 -> 88) plus a
   // tenth; then a child running on along its parent leaving through the top of its last slab: the palm 34 -> 15; then
-  // twigs inside a sibling clone's cage, not only its skeleton radius, faked: the willow 88 -> 73, the oak 27 -> 25): a
+  // twigs inside a sibling clone's cage, not only its skeleton radius, faked: the willow 88 -> 73, the oak 27 -> 25;
+  // then a thick shallow child back on its skeleton right after its collar: the oak 25 -> 21): a
   // change to the mesher that makes more fails here. Three seeds, not one: any change to a joint moves one tree's count by a
   // fifth either way (the exact clearance of a child's skeleton: the poplar's seed 1 went 138 -> 161, seed 2
   // 115 -> 103), the sum by a few percent.
@@ -112,7 +113,7 @@ TEST_CASE("the mesher's own crossings stay at or below what was measured for eve
     const char* preset;
     std::size_t meshMade, folds, necks;
   };
-  for (const Measured& m : {Measured{"black-tupelo", 2, 0, 0}, Measured{"ca-black-oak", 25, 0, 77},
+  for (const Measured& m : {Measured{"black-tupelo", 2, 0, 0}, Measured{"ca-black-oak", 21, 0, 77},
                             Measured{"lombardy-poplar", 0, 0, 4}, Measured{"palm", 15, 0, 0},
                             Measured{"quaking-aspen", 0, 0, 0}, Measured{"weeping-willow", 73, 0, 4}}) {
     INFO(m.preset);
@@ -388,12 +389,13 @@ TEST_CASE("a limb whose children leave through its long neck: the neck bows as i
   // Mesh-made pairs, seeds 1-3, plus a tenth. A straight neck ran up to four radii off a shallow limb's curved
   // skeleton, across the limbs beside it: the aspen file 346, the cottonwood 67; bowed (never towards the parent's
   // axis), 291 and 25; then with a slab's first cross section kept ahead of the collar, 291 and 20; with a child
-  // clear of its parent once past the parent's tip (the aspen's top limbs ran up beside the trunk's line), 56 and 26.
+  // clear of its parent once past the parent's tip (the aspen's top limbs ran up beside the trunk's line), 56 and 26;
+  // with a thick shallow child back on its skeleton right after its collar, 56 and 14.
   struct Measured {
     const char* file;
     std::size_t meshMade;
   };
-  for (const Measured& m : {Measured{"quaking_aspen", 56}, Measured{"eastern_cottonwood", 26}}) {
+  for (const Measured& m : {Measured{"quaking_aspen", 56}, Measured{"eastern_cottonwood", 14}}) {
     INFO(m.file);
     std::size_t meshMade = 0;
     for (std::uint64_t seed = 1; seed <= 3; ++seed) {

@@ -996,10 +996,13 @@ class Builder {
     // further on, a cross section at sLo comes first: the tube is back on its skeleton at its own radius right
     // after the collar, instead of a long cone from the collar (a wide, off-axis first band that cuts others).
     // Never behind the collar's cross section: that would fold the tube back on itself. Only for children
-    // leaving at more than 30 degrees: one running along its parent (barley's awns, a fastigiate poplar) would
-    // bend back to its skeleton beside its neighbours' necks (barley's mesh-made pairs 3,647 with it, 340 without).
+    // leaving at more than 30 degrees, or at least half as thick as their parent: a thin one running along its
+    // parent (barley's awns, a willow's hanging twigs) bends back to its skeleton beside its neighbours' necks
+    // (barley's mesh-made pairs 3,647 with it, 340 without; all trees 1,206 -> 1,230 with every shallow child, ->
+    // 1,105 with the thick ones only: a thick shallow child's collar cone ran along its parent across others).
     const bool steep = start && glm::length(glm::cross(poly.startDirection(), start->parentAxis)) > 0.5;
-    if (steep && sLo < stations.front().first - 4.0 * gap(sLo) && glm::dot(poly.position(sLo) - last.center, last.frame.T) > 0.0) {
+    const bool thick = start && poly.radius(0.0) >= 0.5 * start->parentReach / opt_.limitCompensation;
+    if ((steep || thick) && sLo < stations.front().first - 4.0 * gap(sLo) && glm::dot(poly.position(sLo) - last.center, last.frame.T) > 0.0) {
       // Where the skeleton turns there, the cross section moves on by quarter radii until its band runs forwards.
       double at = sLo;
       while (!ringAhead(poly, last, at) && at + gap(at) < stations.front().first - 4.0 * gap(sLo)) at += 0.5 * gap(at);
