@@ -66,6 +66,11 @@ constexpr double kTopTail = 1.5;
 constexpr double kTopAligned = 0.9;
 // Passes of faking the twigs an earlier pass left past kFarChild.
 constexpr int kFarTwigPasses = 3;
+// A twig (level 2 on) passing within this many radii of a neighbouring stem's axis at that stem's joint, plus its
+// own radius, is a fake branch: a collar is placed at twice the child's radius. All trees' mesh-made pairs at seeds
+// 1-3 1,105 -> 973 and neck crossings 4,950 -> 2,735, quads 0.8 % fewer; at 2.5 radii 954 but quads 1.2 % fewer;
+// at 3 from level 1 on, the palms lost a fifth of their quads (fronds) and shave-grass half.
+constexpr double kCollarReach = 2.0;
 
 struct Ring {
   std::array<std::uint32_t, 4> v{};
@@ -1357,7 +1362,34 @@ class Builder {
         })) {
       return true;
     }
-    return insideSiblingClone(st.parentStem, at.world.position, at.radius);
+    return insideSiblingClone(st.parentStem, at.world.position, at.radius) || (st.level >= 2 && crossesJoint(stem));
+  }
+
+  // Whether a twig, once clear of its own parent, passes through the joint of a stem beside it (one leaving its
+  // parent or its parent's parent): within that stem's collar reach (kCollarReach of its radii) of its axis from
+  // where it leaves its parent to where its wood clears it; the collar and neck built there would cut the twig.
+  bool crossesJoint(int stem) const {
+    const SkeletonStem& st = sk_.stems[static_cast<std::size_t>(stem)];
+    std::vector<int> around = children_[static_cast<std::size_t>(st.parentStem)];
+    const int grand = sk_.stems[static_cast<std::size_t>(st.parentStem)].parentStem;
+    if (grand >= 0) around.insert(around.end(), children_[static_cast<std::size_t>(grand)].begin(), children_[static_cast<std::size_t>(grand)].end());
+    const StemPolyline own(sk_, stem);
+    std::vector<Vec3> path{own.position(std::min(parentClearance(sk_, stem), own.length()))};
+    for (int i = 0; i < own.pointCount(); ++i) {
+      if (own.arcLength(i) > parentClearance(sk_, stem)) path.push_back(own.position(own.arcLength(i)));
+    }
+    for (int c : around) {
+      if (c == stem || c == st.parentStem || faked_[static_cast<std::size_t>(c)]) continue;
+      const SkeletonStem& other = sk_.stems[static_cast<std::size_t>(c)];
+      const StemPolyline poly(sk_, c);
+      const Vec3 a = sk_.nodes[static_cast<std::size_t>(other.attachNode)].world.position;
+      const Vec3 b = poly.position(std::min(parentClearance(sk_, c), poly.length()));
+      const double reach = (kCollarReach * other.startRadius + st.startRadius) * opt_.limitCompensation;
+      for (std::size_t i = 1; i < path.size(); ++i) {
+        if (segmentDistance(path[i - 1], path[i], a, b) < reach) return true;
+      }
+    }
+    return false;
   }
 
   // Whether a twig attached at `point` on `clone`, whose radius is `radius` there, would join it inside another clone

@@ -27,8 +27,9 @@ struct MeshOptions {
   // twigs, as fake branches on its skeleton (TreeMesh::fakedStems), as is a twig whose wood never clears its
   // parent's, or clears it only six parent radii along while at most half its parent's radius thick, or attaches at
   // most four parent radii before its parent splits, or attaches to a clone inside another clone of the same source
-  // (as does such a branch), or whose first ring a pass left more than 1.5 parent radii along (the tree is meshed
-  // again without it); a stem whose children are all faked is a twig, faked where its wood never clears its
+  // (as does such a branch), or (from level 2 on) passes within two radii of a neighbouring stem's axis at that
+  // stem's joint, or whose first ring a pass left more than 1.5 parent radii along (the tree is meshed again
+  // without it); a stem whose children are all faked is a twig, faked where its wood never clears its
   // parent's; off: meshed from that far slab, however far it is.
   bool fakeDisplaced = true;
 };

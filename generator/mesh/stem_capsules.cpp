@@ -61,6 +61,11 @@ std::pair<double, double> closestParameters(const Vec3& p0, const Vec3& p1, cons
 
 }  // namespace
 
+double segmentDistance(const Vec3& p0, const Vec3& p1, const Vec3& q0, const Vec3& q1) {
+  const auto [s, t] = closestParameters(p0, p1, q0, q1);
+  return glm::distance(p0 + (p1 - p0) * s, q0 + (q1 - q0) * t);
+}
+
 double distanceToOverlap(const std::vector<Capsule>& a, const std::vector<Capsule>& b, const Vec3& x, double inflate) {
   double best = std::numeric_limits<double>::infinity();
   for (const Capsule& ca : a) {

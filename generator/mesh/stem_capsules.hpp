@@ -36,6 +36,9 @@ double capsuleReach(const Capsule& c, const Vec3& x, double minRadius = 0.0);
 // The smallest reach of x over a stem's capsules (infinite for a stem without any).
 double stemReach(const std::vector<Capsule>& stem, const Vec3& x, double minRadius = 0.0);
 
+// Distance between segments p0-p1 and q0-q1.
+double segmentDistance(const Vec3& p0, const Vec3& p1, const Vec3& q0, const Vec3& q1);
+
 // Where two stems' wood meets: over every pair of their capsules, each radius times `inflate`, that overlap
 // at their axes' closest points, the smallest distance from x to the middle of those points, in units of the
 // two inflated radii there (infinite when the stems' capsules never overlap).
