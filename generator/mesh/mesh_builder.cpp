@@ -125,6 +125,7 @@ class Builder {
       else if (st.parentStem >= 0) children_[static_cast<std::size_t>(st.parentStem)].push_back(static_cast<int>(i));
     }
     branching_ = bearingStems();
+    layJointAxes();
     for (std::size_t i = 0; i < sk_.stems.size(); ++i) {
       if (!meshed(static_cast<int>(i))) continue;
       if (unjoinableTwig(static_cast<int>(i)) || std::binary_search(fake_.begin(), fake_.end(), static_cast<int>(i))) fakeTwig(static_cast<int>(i));
@@ -162,6 +163,7 @@ class Builder {
   std::vector<bool> branching_;            // per stem: whether it or a clone after it has a meshed child (not a twig)
   std::vector<std::vector<int>> clones_;   // per stem: its meshed clones
   std::vector<std::vector<int>> children_; // per stem: its meshed children (not clones)
+  std::vector<std::pair<Vec3, Vec3>> jointAxis_;  // per child: its axis from its attach node to where it clears its parent
   const std::vector<int>& fake_;            // sorted: stems faked whatever the rules say
   std::vector<bool> faked_;                // per stem: in out_.fakedStems
   std::vector<Vec3> uvwSum_;
@@ -1370,26 +1372,72 @@ class Builder {
   // where it leaves its parent to where its wood clears it; the collar and neck built there would cut the twig.
   bool crossesJoint(int stem) const {
     const SkeletonStem& st = sk_.stems[static_cast<std::size_t>(stem)];
-    std::vector<int> around = children_[static_cast<std::size_t>(st.parentStem)];
-    const int grand = sk_.stems[static_cast<std::size_t>(st.parentStem)].parentStem;
-    if (grand >= 0) around.insert(around.end(), children_[static_cast<std::size_t>(grand)].begin(), children_[static_cast<std::size_t>(grand)].end());
-    const StemPolyline own(sk_, stem);
-    std::vector<Vec3> path{own.position(std::min(parentClearance(sk_, stem), own.length()))};
-    for (int i = 0; i < own.pointCount(); ++i) {
-      if (own.arcLength(i) > parentClearance(sk_, stem)) path.push_back(own.position(own.arcLength(i)));
+    const std::vector<Vec3> path = axisPast(stem, parentClearance(sk_, stem));
+    Box pathBox{path[0], path[0]};
+    for (const Vec3& p : path) {
+      pathBox.lo = glm::min(pathBox.lo, p);
+      pathBox.hi = glm::max(pathBox.hi, p);
     }
-    for (int c : around) {
-      if (c == stem || c == st.parentStem || faked_[static_cast<std::size_t>(c)]) continue;
-      const SkeletonStem& other = sk_.stems[static_cast<std::size_t>(c)];
-      const StemPolyline poly(sk_, c);
-      const Vec3 a = sk_.nodes[static_cast<std::size_t>(other.attachNode)].world.position;
-      const Vec3 b = poly.position(std::min(parentClearance(sk_, c), poly.length()));
-      const double reach = (kCollarReach * other.startRadius + st.startRadius) * opt_.limitCompensation;
-      for (std::size_t i = 1; i < path.size(); ++i) {
-        if (segmentDistance(path[i - 1], path[i], a, b) < reach) return true;
+    const int grand = sk_.stems[static_cast<std::size_t>(st.parentStem)].parentStem;
+    for (const int from : {st.parentStem, grand}) {
+      if (from < 0) continue;
+      for (int c : children_[static_cast<std::size_t>(from)]) {
+        if (c == stem || c == st.parentStem || faked_[static_cast<std::size_t>(c)]) continue;
+        const auto& [a, b] = jointAxis_[static_cast<std::size_t>(c)];
+        const double reach = (kCollarReach * sk_.stems[static_cast<std::size_t>(c)].startRadius + st.startRadius) * opt_.limitCompensation;
+        const Box joint{glm::min(a, b) - Vec3(reach), glm::max(a, b) + Vec3(reach)};
+        if (!joint.overlaps(pathBox)) continue;
+        for (std::size_t i = 1; i < path.size(); ++i) {
+          if (segmentDistance(path[i - 1], path[i], a, b) < reach) return true;
+        }
       }
     }
     return false;
+  }
+
+  // A stem's axis (its attach node, then its own nodes) from arc length `from` on; a lone point if it is shorter.
+  std::vector<Vec3> axisPast(int stem, double from) const {
+    const SkeletonStem& st = sk_.stems[static_cast<std::size_t>(stem)];
+    std::vector<Vec3> path;
+    Vec3 prev = sk_.nodes[static_cast<std::size_t>(st.attachNode)].world.position;
+    double s = 0.0;
+    for (int i = 0; i < st.nodeCount; ++i) {
+      const Vec3 p = sk_.nodes[static_cast<std::size_t>(st.firstNode + i)].world.position;
+      const double length = glm::distance(prev, p);
+      if (s + length > from) {
+        if (path.empty()) path.push_back(length > 0.0 ? prev + (p - prev) * ((std::max(from, s) - s) / length) : p);
+        path.push_back(p);
+      }
+      s += length;
+      prev = p;
+    }
+    if (path.empty()) path.push_back(prev);
+    return path;
+  }
+
+  // Each child's joint as a segment: from its attach node to where its wood clears its parent (or its tip).
+  void layJointAxes() {
+    jointAxis_.assign(sk_.stems.size(), {Vec3(0.0), Vec3(0.0)});
+    for (std::size_t i = 0; i < sk_.stems.size(); ++i) {
+      const SkeletonStem& st = sk_.stems[i];
+      if (st.parentStem < 0 || st.cloneOf >= 0 || st.attachNode < 0 || st.nodeCount == 0) continue;
+      const Vec3 a = sk_.nodes[static_cast<std::size_t>(st.attachNode)].world.position;
+      const double clear = parentClearance(sk_, static_cast<int>(i));
+      Vec3 prev = a, b = a;
+      double s = 0.0;
+      for (int k = 0; k < st.nodeCount; ++k) {
+        const Vec3 p = sk_.nodes[static_cast<std::size_t>(st.firstNode + k)].world.position;
+        const double length = glm::distance(prev, p);
+        b = p;
+        if (s + length >= clear) {
+          if (length > 0.0) b = prev + (p - prev) * ((clear - s) / length);
+          break;
+        }
+        s += length;
+        prev = p;
+      }
+      jointAxis_[i] = {a, b};
+    }
   }
 
   // Whether a twig attached at `point` on `clone`, whose radius is `radius` there, would join it inside another clone
