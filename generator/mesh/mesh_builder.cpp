@@ -164,6 +164,7 @@ class Builder {
   std::vector<std::vector<int>> clones_;   // per stem: its meshed clones
   std::vector<std::vector<int>> children_; // per stem: its meshed children (not clones)
   std::vector<std::pair<Vec3, Vec3>> jointAxis_;  // per child: its axis from its attach node to where it clears its parent
+  std::vector<double> clearance_;          // per child: parentClearance, the arc length where it clears its parent
   const std::vector<int>& fake_;            // sorted: stems faked whatever the rules say
   std::vector<bool> faked_;                // per stem: in out_.fakedStems
   std::vector<Vec3> uvwSum_;
@@ -1352,7 +1353,7 @@ class Builder {
     if (branching_[static_cast<std::size_t>(stem)]) {
       return st.level >= 2 && bearsTwigsOnly(stem) && insideSiblingClone(st.parentStem, at.world.position, at.radius);
     }
-    const double clearance = parentClearance(sk_, stem);
+    const double clearance = clearance_[static_cast<std::size_t>(stem)];
     if (clearance >= StemPolyline(sk_, stem).length() ||
         (clearance >= kShallowFrom * at.radius && st.startRadius <= kThinTwig * at.radius)) {
       return true;
@@ -1372,7 +1373,7 @@ class Builder {
   // where it leaves its parent to where its wood clears it; the collar and neck built there would cut the twig.
   bool crossesJoint(int stem) const {
     const SkeletonStem& st = sk_.stems[static_cast<std::size_t>(stem)];
-    const std::vector<Vec3> path = axisPast(stem, parentClearance(sk_, stem));
+    const std::vector<Vec3> path = axisPast(stem, clearance_[static_cast<std::size_t>(stem)]);
     Box pathBox{path[0], path[0]};
     for (const Vec3& p : path) {
       pathBox.lo = glm::min(pathBox.lo, p);
@@ -1395,48 +1396,46 @@ class Builder {
     return false;
   }
 
-  // A stem's axis (its attach node, then its own nodes) from arc length `from` on; a lone point if it is shorter.
-  std::vector<Vec3> axisPast(int stem, double from) const {
+  // The point at arc length s along a stem's axis (its attach node, then its own nodes); its tip past the end.
+  Vec3 axisPoint(int stem, double s) const {
     const SkeletonStem& st = sk_.stems[static_cast<std::size_t>(stem)];
-    std::vector<Vec3> path;
     Vec3 prev = sk_.nodes[static_cast<std::size_t>(st.attachNode)].world.position;
-    double s = 0.0;
+    double at = 0.0;
     for (int i = 0; i < st.nodeCount; ++i) {
       const Vec3 p = sk_.nodes[static_cast<std::size_t>(st.firstNode + i)].world.position;
       const double length = glm::distance(prev, p);
-      if (s + length > from) {
-        if (path.empty()) path.push_back(length > 0.0 ? prev + (p - prev) * ((std::max(from, s) - s) / length) : p);
-        path.push_back(p);
-      }
-      s += length;
+      if (at + length >= s) return length > 0.0 ? prev + (p - prev) * (std::max(s - at, 0.0) / length) : p;
+      at += length;
       prev = p;
     }
-    if (path.empty()) path.push_back(prev);
+    return prev;
+  }
+
+  // A stem's axis from arc length `from` on: the point there, then its nodes past it.
+  std::vector<Vec3> axisPast(int stem, double from) const {
+    const SkeletonStem& st = sk_.stems[static_cast<std::size_t>(stem)];
+    std::vector<Vec3> path{axisPoint(stem, from)};
+    Vec3 prev = sk_.nodes[static_cast<std::size_t>(st.attachNode)].world.position;
+    double at = 0.0;
+    for (int i = 0; i < st.nodeCount; ++i) {
+      const Vec3 p = sk_.nodes[static_cast<std::size_t>(st.firstNode + i)].world.position;
+      at += glm::distance(prev, p);
+      if (at > from) path.push_back(p);
+      prev = p;
+    }
     return path;
   }
 
-  // Each child's joint as a segment: from its attach node to where its wood clears its parent (or its tip).
+  // Each child's clearance from its parent, and its joint as a segment: from its attach node to where its wood
+  // clears its parent (or its tip).
   void layJointAxes() {
     jointAxis_.assign(sk_.stems.size(), {Vec3(0.0), Vec3(0.0)});
+    clearance_.assign(sk_.stems.size(), 0.0);
     for (std::size_t i = 0; i < sk_.stems.size(); ++i) {
       const SkeletonStem& st = sk_.stems[i];
-      if (st.parentStem < 0 || st.cloneOf >= 0 || st.attachNode < 0 || st.nodeCount == 0) continue;
-      const Vec3 a = sk_.nodes[static_cast<std::size_t>(st.attachNode)].world.position;
-      const double clear = parentClearance(sk_, static_cast<int>(i));
-      Vec3 prev = a, b = a;
-      double s = 0.0;
-      for (int k = 0; k < st.nodeCount; ++k) {
-        const Vec3 p = sk_.nodes[static_cast<std::size_t>(st.firstNode + k)].world.position;
-        const double length = glm::distance(prev, p);
-        b = p;
-        if (s + length >= clear) {
-          if (length > 0.0) b = prev + (p - prev) * ((clear - s) / length);
-          break;
-        }
-        s += length;
-        prev = p;
-      }
-      jointAxis_[i] = {a, b};
+      if (st.parentStem < 0 || st.cloneOf >= 0 || st.attachNode < 0) continue;
+      clearance_[i] = parentClearance(sk_, static_cast<int>(i));
+      jointAxis_[i] = {sk_.nodes[static_cast<std::size_t>(st.attachNode)].world.position, axisPoint(static_cast<int>(i), clearance_[i])};
     }
   }
 
