@@ -1321,7 +1321,7 @@ class Builder {
   bool buried(int stem, const std::vector<bool>& bearing) const {
     const SkeletonStem& st = sk_.stems[static_cast<std::size_t>(stem)];
     if (!opt_.fakeDisplaced || st.parentStem < 0 || st.cloneOf >= 0 || bearing[static_cast<std::size_t>(stem)]) return false;
-    return parentClearance(sk_, stem) >= StemPolyline(sk_, stem).length();
+    return clearance_[static_cast<std::size_t>(stem)] >= StemPolyline(sk_, stem).length();
   }
 
   // A meshed child not (yet) a fake branch makes its parent, and the stems that parent is a clone of, bearing.
@@ -1354,7 +1354,8 @@ class Builder {
       return st.level >= 2 && bearsTwigsOnly(stem) && insideSiblingClone(st.parentStem, at.world.position, at.radius);
     }
     const double clearance = clearance_[static_cast<std::size_t>(stem)];
-    if (clearance >= StemPolyline(sk_, stem).length() ||
+    const StemPolyline poly(sk_, stem);
+    if (clearance >= poly.length() ||
         (clearance >= kShallowFrom * at.radius && st.startRadius <= kThinTwig * at.radius)) {
       return true;
     }
@@ -1365,15 +1366,19 @@ class Builder {
         })) {
       return true;
     }
-    return insideSiblingClone(st.parentStem, at.world.position, at.radius) || (st.level >= 2 && crossesJoint(stem));
+    return insideSiblingClone(st.parentStem, at.world.position, at.radius) || (st.level >= 2 && crossesJoint(stem, poly));
   }
 
   // Whether a twig, once clear of its own parent, passes through the joint of a stem beside it (one leaving its
   // parent or its parent's parent): within that stem's collar reach (kCollarReach of its radii) of its axis from
   // where it leaves its parent to where its wood clears it; the collar and neck built there would cut the twig.
-  bool crossesJoint(int stem) const {
+  bool crossesJoint(int stem, const StemPolyline& poly) const {
     const SkeletonStem& st = sk_.stems[static_cast<std::size_t>(stem)];
-    const std::vector<Vec3> path = axisPast(stem, clearance_[static_cast<std::size_t>(stem)]);
+    const double clear = clearance_[static_cast<std::size_t>(stem)];
+    std::vector<Vec3> path{poly.position(std::min(clear, poly.length()))};
+    for (int i = 0; i < poly.pointCount(); ++i) {
+      if (poly.arcLength(i) > clear) path.push_back(poly.position(poly.arcLength(i)));
+    }
     Box pathBox{path[0], path[0]};
     for (const Vec3& p : path) {
       pathBox.lo = glm::min(pathBox.lo, p);
@@ -1396,36 +1401,6 @@ class Builder {
     return false;
   }
 
-  // The point at arc length s along a stem's axis (its attach node, then its own nodes); its tip past the end.
-  Vec3 axisPoint(int stem, double s) const {
-    const SkeletonStem& st = sk_.stems[static_cast<std::size_t>(stem)];
-    Vec3 prev = sk_.nodes[static_cast<std::size_t>(st.attachNode)].world.position;
-    double at = 0.0;
-    for (int i = 0; i < st.nodeCount; ++i) {
-      const Vec3 p = sk_.nodes[static_cast<std::size_t>(st.firstNode + i)].world.position;
-      const double length = glm::distance(prev, p);
-      if (at + length >= s) return length > 0.0 ? prev + (p - prev) * (std::max(s - at, 0.0) / length) : p;
-      at += length;
-      prev = p;
-    }
-    return prev;
-  }
-
-  // A stem's axis from arc length `from` on: the point there, then its nodes past it.
-  std::vector<Vec3> axisPast(int stem, double from) const {
-    const SkeletonStem& st = sk_.stems[static_cast<std::size_t>(stem)];
-    std::vector<Vec3> path{axisPoint(stem, from)};
-    Vec3 prev = sk_.nodes[static_cast<std::size_t>(st.attachNode)].world.position;
-    double at = 0.0;
-    for (int i = 0; i < st.nodeCount; ++i) {
-      const Vec3 p = sk_.nodes[static_cast<std::size_t>(st.firstNode + i)].world.position;
-      at += glm::distance(prev, p);
-      if (at > from) path.push_back(p);
-      prev = p;
-    }
-    return path;
-  }
-
   // Each child's clearance from its parent, and its joint as a segment: from its attach node to where its wood
   // clears its parent (or its tip).
   void layJointAxes() {
@@ -1435,7 +1410,8 @@ class Builder {
       const SkeletonStem& st = sk_.stems[i];
       if (st.parentStem < 0 || st.cloneOf >= 0 || st.attachNode < 0) continue;
       clearance_[i] = parentClearance(sk_, static_cast<int>(i));
-      jointAxis_[i] = {sk_.nodes[static_cast<std::size_t>(st.attachNode)].world.position, axisPoint(static_cast<int>(i), clearance_[i])};
+      const StemPolyline poly(sk_, static_cast<int>(i));
+      jointAxis_[i] = {poly.position(0.0), poly.position(std::min(clearance_[i], poly.length()))};
     }
   }
 
