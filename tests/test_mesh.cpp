@@ -61,6 +61,14 @@ SpeciesParams cylinderSpecies() {
   return p;
 }
 
+// Per stem: whether it has a child (not a stub), or one of the clones it splits into has one: not a twig.
+std::vector<bool> bearingStems(const Skeleton& s) {
+  std::vector<bool> bears(s.stems.size(), false);
+  for (const SkeletonStem& st : s.stems)
+    for (int x = st.cloneOf < 0 && !st.stub ? st.parentStem : -1; x >= 0; x = s.stems[static_cast<std::size_t>(x)].cloneOf) bears[static_cast<std::size_t>(x)] = true;
+  return bears;
+}
+
 }  // namespace
 
 TEST_CASE("every preset meshes to one closed, outward, manifold piece at several seeds and levels", "[mesh]") {
@@ -445,13 +453,11 @@ TEST_CASE("a meshed twig never passes through a neighbouring stem's joint: those
     const Skeleton s = growSpeciesFile("sassafras", seed);
     const TreeMesh tree = buildTreeMesh(s);
     const std::set<int> faked(tree.fakedStems.begin(), tree.fakedStems.end());
-    std::vector<std::vector<int>> children(s.stems.size());
-    std::vector<bool> bears(s.stems.size(), false);
+    const std::vector<bool> bears = bearingStems(s);
+    std::vector<std::vector<int>> children(s.stems.size());  // meshed ones
     for (std::size_t i = 0; i < s.stems.size(); ++i) {
       const SkeletonStem& st = s.stems[i];
-      if (st.parentStem < 0 || st.cloneOf >= 0 || st.stub) continue;
-      if (!faked.count(static_cast<int>(i))) children[static_cast<std::size_t>(st.parentStem)].push_back(static_cast<int>(i));
-      bears[static_cast<std::size_t>(st.parentStem)] = true;
+      if (st.parentStem >= 0 && st.cloneOf < 0 && !st.stub && !faked.count(static_cast<int>(i))) children[static_cast<std::size_t>(st.parentStem)].push_back(static_cast<int>(i));
     }
     for (std::size_t i = 0; i < s.stems.size(); ++i) {
       const SkeletonStem& st = s.stems[i];
@@ -667,9 +673,7 @@ TEST_CASE("twigs shallow and thin along their parent, just before its split or i
     const Skeleton s = growSpeciesFile(name, 1);
     const TreeMesh tree = buildTreeMesh(s);
     const std::set<int> faked(tree.fakedStems.begin(), tree.fakedStems.end());
-    std::vector<bool> bears(s.stems.size(), false);  // a stem with a child, or one of whose clones has one
-    for (const SkeletonStem& st : s.stems)
-      for (int x = st.cloneOf < 0 && !st.stub ? st.parentStem : -1; x >= 0; x = s.stems[static_cast<std::size_t>(x)].cloneOf) bears[static_cast<std::size_t>(x)] = true;
+    const std::vector<bool> bears = bearingStems(s);
     std::size_t shallow = 0, beforeSplit = 0;
     for (std::size_t i = 0; i < s.stems.size(); ++i) {
       const SkeletonStem& st = s.stems[i];
