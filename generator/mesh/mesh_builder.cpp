@@ -1004,12 +1004,13 @@ class Builder {
     // further on, a cross section at sLo comes first: the tube is back on its skeleton at its own radius right
     // after the collar, instead of a long cone from the collar (a wide, off-axis first band that cuts others).
     // Never behind the collar's cross section: that would fold the tube back on itself. Only for children
-    // leaving at more than 30 degrees, or at least half as thick as their parent: a thin one running along its
-    // parent (barley's awns, a willow's hanging twigs) bends back to its skeleton beside its neighbours' necks
-    // (barley's mesh-made pairs 3,647 with it, 340 without; all trees 1,206 -> 1,230 with every shallow child, ->
-    // 1,105 with the thick ones only: a thick shallow child's collar cone ran along its parent across others).
+    // leaving at more than 30 degrees, at least half as thick as their parent, or with no clearance from their parent
+    // to keep (parentReach 0: through a top, a split's clones, trunks on a hub): a thin one running along its parent
+    // (barley's awns, a willow's hanging twigs) bends back to its skeleton beside its neighbours' necks (barley's
+    // mesh-made pairs 3,647 with it, 340 without; all trees 1,206 -> 1,230 with every shallow child, -> 1,105 with
+    // these only; most of that from the clearance-free ones: leaving them out later gave 1,048 against 973).
     const bool steep = start && glm::length(glm::cross(poly.startDirection(), start->parentAxis)) > 0.5;
-    const bool thick = start && poly.radius(0.0) >= 0.5 * start->parentReach / opt_.limitCompensation;
+    const bool thick = start && (start->parentReach <= 0.0 || poly.radius(0.0) >= 0.5 * start->parentReach / opt_.limitCompensation);
     if ((steep || thick) && sLo < stations.front().first - 4.0 * gap(sLo) && glm::dot(poly.position(sLo) - last.center, last.frame.T) > 0.0) {
       // Where the skeleton turns there, the cross section moves on by quarter radii until its band runs forwards.
       double at = sLo;
