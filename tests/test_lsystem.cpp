@@ -6,6 +6,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <random>
 #include <sstream>
 
@@ -153,6 +154,35 @@ TEST_CASE("the turtle moves, turns left with '+' and draws only F", "[lsystem]")
   CHECK(glm::length(r.last.position - Vec3(2, 1, 0)) < 1e-12);
   CHECK(r.segments == 2);
   CHECK(r.graph.nodes.size() == 3);
+}
+
+TEST_CASE("a line the turtle draws twice is one internode", "[lsystem]") {
+  // F[F]F: the branch and the axis after it draw the same line from the same node.
+  const Interpretation r = interpret(derive(parseLsystem("n: 0\naxiom: F[F]F[+F]\n", "t.lsys")), turtleSettings(parseLsystem("n: 0\naxiom: F\n", "t.lsys")));
+  CHECK(r.segments == 3);
+  CHECK(r.graph.nodes.size() == 4);
+  // ABOP 1.24b and c derive whole subtrees twice (a branch leaving where, and as, its mother axis goes on); every
+  // preset then has no two internodes from one node to one point.
+  std::size_t merged = 0;
+  for (const auto& path : presetFiles()) {
+    INFO(path.filename().string());
+    const Lsystem system = parseLsystem(readFile(path.string()), path.string());
+    const ModuleString str = derive(system);
+    const Interpretation drawn = interpret(str, turtleSettings(system));
+    std::map<std::pair<std::int32_t, std::array<double, 3>>, int> seen;
+    for (const BranchNode& n : drawn.graph.nodes) {
+      if (n.parent < 0) continue;
+      // Rounded far coarser than the merge's tolerance, so near misses would show as repeats too.
+      const double unit = 1e-6 * glm::length(n.position - drawn.graph.nodes[static_cast<std::size_t>(n.parent)].position);
+      const std::array<double, 3> key{std::round(n.position.x / unit), std::round(n.position.y / unit), std::round(n.position.z / unit)};
+      CHECK(++seen[{n.parent, key}] == 1);
+    }
+    std::size_t fs = 0;
+    for (std::size_t i = 0; i < str.size(); ++i) fs += str.modules[i].symbol == 'F' ? 1 : 0;
+    if (path.filename() == "fig-1-24c.lsys" || path.filename() == "fig-1-24b.lsys") CHECK(drawn.segments < fs);
+    merged += fs - std::min(fs, drawn.segments);
+  }
+  CHECK(merged > 1000);
 }
 
 TEST_CASE("turtle rotations keep the frame orthonormal and right-handed and undo one another", "[lsystem]") {

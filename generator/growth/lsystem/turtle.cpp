@@ -1,5 +1,6 @@
 #include "turtle.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "common/input_error.hpp"
@@ -115,6 +116,34 @@ struct OpenPolygon {
   int colour = 0;
 };
 
+// Each node's children as a linked list (first child, next sibling): a few words a node for strings of 10^7 modules.
+struct Children {
+  std::vector<std::int32_t> first, next;
+};
+
+// The node an F from `from` to `to` arrives at: the one an earlier F drew there, or a new one. A grammar may draw
+// a line twice (ABOP 1.24b and c: a branch leaving where, and as, its mother axis goes on derives the same subtree
+// as that axis): two stems on top of each other are one branch, not a skeleton whose meshes run through each other.
+std::int32_t internode(BranchGraph& graph, Children& children, std::int32_t from, const Vec3& to, double radius, double length,
+                       std::size_t& segments) {
+  // Both ends agree to rounding: the same line reached by other turns (-+ against none) differs in the last bits.
+  const double near = 1e-9 * length;
+  for (std::int32_t c = children.first[static_cast<std::size_t>(from)]; c >= 0; c = children.next[static_cast<std::size_t>(c)]) {
+    BranchNode& n = graph.nodes[static_cast<std::size_t>(c)];
+    if (glm::length(n.position - to) <= near) {
+      n.radius = std::max(n.radius, radius);
+      return c;
+    }
+  }
+  const auto node = static_cast<std::int32_t>(graph.nodes.size());
+  graph.nodes.push_back({to, from, radius, -1});
+  children.first.push_back(-1);
+  children.next.push_back(children.first[static_cast<std::size_t>(from)]);
+  children.first[static_cast<std::size_t>(from)] = node;
+  ++segments;
+  return node;
+}
+
 }  // namespace
 
 Interpretation interpret(const ModuleString& str, const TurtleSettings& settings, bool recordDrawing) {
@@ -125,6 +154,9 @@ Interpretation interpret(const ModuleString& str, const TurtleSettings& settings
   std::vector<TurtleState> stack;
   std::vector<OpenPolygon> polygons;
   out.graph.nodes.push_back({t.position, -1, t.width > 0 ? t.width / 2 : 0, -1});
+  Children children;
+  children.first.push_back(-1);
+  children.next.push_back(-1);
   t.node = 0;
   const std::size_t n = str.size();
   for (std::size_t i = 0; i < n; ++i) {
@@ -141,10 +173,8 @@ Interpretation interpret(const ModuleString& str, const TurtleSettings& settings
         }
         if (l == 0) break;
         if (recordDrawing) out.drawing.push_back({t.position, next, t.width, t.colour});
-        out.graph.nodes.push_back({next, t.node, t.width > 0 ? t.width / 2 : 0, -1});
-        t.node = static_cast<std::int32_t>(out.graph.nodes.size() - 1);
+        t.node = internode(out.graph, children, t.node, next, t.width > 0 ? t.width / 2 : 0, std::abs(l), out.segments);
         t.position = next;
-        ++out.segments;
         if (tropism) bend(t, settings.tropism, settings.susceptibility);
         break;
       }

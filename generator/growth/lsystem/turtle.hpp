@@ -58,9 +58,9 @@ struct TurtlePolygon {
 };
 
 struct Interpretation {
-  BranchGraph graph;           // node 0 at the start position; one node per drawn F
+  BranchGraph graph;           // node 0 at the start position; one node per drawn F (an F over an earlier one's line: none)
   TurtleState last;            // the state after the last module
-  std::size_t segments = 0;    // internodes drawn
+  std::size_t segments = 0;    // internodes drawn (a line drawn twice counts once)
   std::vector<TurtleSegment> drawing;   // only with recordDrawing
   std::vector<TurtlePolygon> polygons;  // only with recordDrawing
 };
