@@ -265,6 +265,29 @@ TEST_CASE("a root with several children becomes a hub of trunks", "[graph]") {
   CHECK(r.eulerCharacteristic == 2);
 }
 
+TEST_CASE("a single trunk stands on the ground unless it branches within a root radius of it", "[graph]") {
+  // A trunk of radius 0.1 (a given radius) branching at height h: a slab reaches at most one parent radius below
+  // its branch point, so above that the trunk needs no hub (whose box and neck moved ABOP 1.24c's lowest branches
+  // half a metre up the trunk, folding their first bands).
+  for (const double h : {0.05, 0.09, 0.12, 0.3}) {
+    INFO("branching at " << h);
+    BranchGraph g;
+    g.nodes = {at(0, 0, 0, -1), at(0, 0, h, 0), at(0, 0, h + 1, 1), at(0.5, 0, h + 0.5, 1)};
+    g.nodes[1].radius = 0.1;
+    const Skeleton s = graphToSkeleton(g);
+    CHECK((s.nodes[0].kind == NodeKind::Root) == (h < 0.1));
+    const TreeMesh tree = buildTreeMesh(s);
+    const MeshTopologyReport r = checkTopology(tree.mesh);
+    CHECK(r.boundaryEdges == 0);
+    CHECK(r.eulerCharacteristic == 2);
+    if (h < 0.1) continue;
+    // The branch leaves from a slab about its attachment, not from far up the trunk.
+    for (const MeshRing& ring : tree.rings) {
+      if (ring.stem == 1 && ring.arc < 0) CHECK(ring.center.z < h + 0.15);
+    }
+  }
+}
+
 TEST_CASE("a thin child leaves through a square inset in its parent's side, on the side where its axis meets it", "[graph][mesh]") {
   // A trunk of radius 0.4 with one twig of radius 0.03 leaving it level at 2 m, towards the middle of a side (the
   // trunk's cross sections have their corners on x and y).

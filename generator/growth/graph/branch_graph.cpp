@@ -278,7 +278,7 @@ class Converter {
     for (std::size_t i = root; next_[i] >= 0;) {
       const auto c = static_cast<std::size_t>(next_[i]);
       arc += glm::distance(g_.nodes[c].position, g_.nodes[i].position);
-      if (arc > 2.0 * radius_[root]) return false;
+      if (arc > 1.0 * radius_[root]) return false;
       if (t_.children[c].size() > 1) return true;
       i = c;
     }
