@@ -327,6 +327,43 @@ TEST_CASE("a meshed stem with no meshed child clears its parent's wood before it
   CHECK(buried > 100);  // the rule has work to do on these plants
 }
 
+TEST_CASE("a tube passes its stem's branch points within their radius where their children are fake branches", "[lsystem][mesh]") {
+  // ABOP 1.24c turns at every node: a tube straight across a run of such branch points cut the corner through its
+  // parent and neighbours. Checked between consecutive cross sections on the skeleton.
+  for (const char* name : {"fig-1-24c", "fig-1-24f", "fig-1-31a"}) {
+    INFO(name);
+    const std::string file = std::string(ARBOR_ASSET_DIR) + "/lsystems/" + name + ".lsys";
+    const Skeleton s = readLsystemModel(readFile(file), file).grow({});
+    const TreeMesh tree = buildTreeMesh(s);
+    std::vector<bool> meshed(s.stems.size(), false);
+    for (int stem : tree.quadStem)
+      if (stem >= 0) meshed[static_cast<std::size_t>(stem)] = true;
+    std::vector<bool> bearing(s.nodes.size(), false);  // a meshed stem leaves the node
+    for (std::size_t i = 0; i < s.stems.size(); ++i)
+      if (meshed[i] && s.stems[i].attachNode >= 0) bearing[static_cast<std::size_t>(s.stems[i].attachNode)] = true;
+    std::vector<std::vector<const MeshRing*>> rings(s.stems.size());
+    for (const MeshRing& r : tree.rings)
+      if (r.stem >= 0 && r.arc >= 0) rings[static_cast<std::size_t>(r.stem)].push_back(&r);
+    std::size_t passed = 0;
+    for (std::size_t i = 0; i < s.stems.size(); ++i) {
+      if (!meshed[i]) continue;
+      const StemPolyline poly(s, static_cast<int>(i));
+      const auto& own = rings[i];
+      for (std::size_t k = 1; k < own.size(); ++k) {
+        for (int j = 0; j < poly.pointCount(); ++j) {
+          const double arc = poly.arcLength(j);
+          const SkeletonNode& n = s.nodes[static_cast<std::size_t>(poly.node(j))];
+          if (arc <= own[k - 1]->arc || arc >= own[k]->arc || n.kind != NodeKind::Attachment || bearing[static_cast<std::size_t>(poly.node(j))]) continue;
+          const Vec3 p = poly.position(arc);
+          CHECK(segmentDistance(p, p, own[k - 1]->center, own[k]->center) <= poly.radius(arc) * 1.0001);
+          ++passed;
+        }
+      }
+    }
+    CHECK(passed > 20);
+  }
+}
+
 TEST_CASE("the l-system model's parameters edit the grammar and re-derive", "[lsystem]") {
   const std::string text = readFile(std::string(ARBOR_ASSET_DIR) + "/lsystems/fig-2-6a.lsys");
   TreeModel model = readLsystemModel(text, "fig-2-6a.lsys");

@@ -895,6 +895,18 @@ class Builder {
     return slabs;
   }
 
+  // Whether the straight line from the stem's point `from` to point `to` passes every point between within its radius.
+  static bool chordPasses(const StemPolyline& poly, int from, int to) {
+    if (to >= poly.pointCount()) return true;
+    const Vec3 a = poly.position(poly.arcLength(from)), b = poly.position(poly.arcLength(to));
+    for (int j = from + 1; j < to; ++j) {
+      const double s = poly.arcLength(j);
+      const Vec3 p = poly.position(s);
+      if (segmentDistance(p, p, a, b) > poly.radius(s)) return false;
+    }
+    return true;
+  }
+
   // Whether a child's skeleton, once out of its parent's reach about the branch point, comes back within it.
   static bool runsBackThrough(const StemPolyline& poly, const PortStart& start) {
     const double reach = start.slabReach;
@@ -970,14 +982,18 @@ class Builder {
       }
       if (s > sLo + gap(sLo)) stations.emplace_back(s, -2);
     };
+    int pinned = 0;  // the last point the tube passes through: the chord from it must pass the points skipped since
     for (int i = 0; i < poly.pointCount(); ++i) {
       const int node = poly.node(i);
       if (node == st.attachNode || node == lastNode) continue;
       // Intermediate nodes pin the surface next to a joint; the slab's own cross sections do that here.
       const NodeKind kind = sk_.nodes[static_cast<std::size_t>(node)].kind;
       if (kind == NodeKind::Before || kind == NodeKind::After) continue;
-      // A branch point whose children are all left to impostors needs no cross section of its own.
-      if (kind == NodeKind::Attachment && stemsAt_[static_cast<std::size_t>(node)].empty()) continue;
+      // A branch point whose children are all left to impostors needs no cross section of its own, unless the tube
+      // would then pass it (or the ones skipped before it) farther than its radius: where the stem turns (an
+      // L-system's every node may), it cut the corner across its parent and neighbours.
+      if (kind == NodeKind::Attachment && stemsAt_[static_cast<std::size_t>(node)].empty() && chordPasses(poly, pinned, i + 1)) continue;
+      pinned = i;
       addPlain(poly.arcLength(i));
     }
     for (std::size_t j = 0; j < slabs.size(); ++j) {
