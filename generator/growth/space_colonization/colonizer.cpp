@@ -18,6 +18,9 @@ double distance2(const Vec3& a, const Vec3& b) {
 constexpr double kZeroSum = 1e-9;
 // A new node this near (in segment lengths) to an existing child of its node would lie on top of it.
 constexpr double kSameChild = 1e-6;
+// Attraction points on both sides of a node, just past the plane halfway to its parent, pull it straight back: a
+// new internode turning back more than this (cos 150 degrees) from the one it grows from would fold a twig onto itself.
+constexpr double kTurnBack = -0.866;
 
 // The segment arriving at node i: from its parent, or the root's point.
 bool segmentTouches(const Obstacle& o, const std::vector<Node>& nodes, std::size_t i) {
@@ -223,6 +226,10 @@ void Colonizer::grow(const Grower& g) {
   const double same = kSameChild * settings_.segmentLength;
   for (const std::uint32_t c : children_[g.node])
     if (distance2(nodes_[c].position, to) < same * same) return;
+  if (const std::int32_t parent = nodes_[g.node].parent; parent >= 0) {
+    const Vec3 arriving = from - nodes_[static_cast<std::size_t>(parent)].position;
+    if (glm::dot(arriving, g.direction) < kTurnBack * glm::length(arriving)) return;
+  }
   for (const Obstacle& o : obstacles_)
     if (segmentHitsObstacle(o, from, to)) return;
   const auto node = static_cast<std::uint32_t>(nodes_.size());
