@@ -416,6 +416,19 @@ TEST_CASE("a limb whose children leave through its long neck: the neck bows as i
   }
 }
 
+TEST_CASE("a slab squeezed against the tube's start takes the collar as its first cross section where its band would fold", "[mesh][real-data]") {
+  const std::vector<std::string> files = test::arbaroSpeciesFiles(ARBOR_SPECIES_DIR);
+  if (files.empty()) return;  // arbaroSpeciesFiles said why
+  // The sassafras file at seed 2: a limb's collar stands 3.5 of its radii off its skeleton, and its first slab
+  // (a child attached before the tube begins) is 0.025 m long against a cross section 0.07 m wide: the long first
+  // band arrived sideways and the slab's band folded back over it.
+  for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+    INFO("seed " << seed);
+    const Skeleton s = growSpeciesFile("sassafras", seed);
+    CHECK(checkSelfIntersections(buildTreeMesh(s), s).folds == 0);
+  }
+}
+
 TEST_CASE("a limb running up past its parent's tip begins its tube there, not where it leaves the parent's line", "[mesh][real-data]") {
   const std::vector<std::string> files = test::arbaroSpeciesFiles(ARBOR_SPECIES_DIR);
   if (files.empty()) return;  // arbaroSpeciesFiles said why

@@ -1048,6 +1048,7 @@ class Builder {
       if (best >= kTopAligned) topSlab = static_cast<int>(slabs.size()) - 1;
     }
     double previousS = sLo;
+    const std::array<std::uint32_t, 4> collar = last.v;  // the band from the collar may arrive sideways
     for (const auto& [s, role] : stations) {
       // Extra cross sections where the spacing limits ask for them (never inside a slab).
       if (role < 0) {  // a slab's own band gets no extra cross sections
@@ -1111,6 +1112,9 @@ class Builder {
       // at seeds 1-3: mesh-made pairs 1,830 -> 1,724, folds 19 -> 8 (any cross section as the slab's first: the
       // same, but a vertex of a random branch graph then had valence 7 or 8).
       double at = s;
+      if (role == -1 && last.v == collar && unused(last) && slabFolds(poly, last, slabs, s, s) &&
+          ringAhead(poly, last, slabHi(slabs, s), slabNeed(slabs, s)))
+        continue;
       if (role == -1 && !ringAhead(poly, last, s, slabNeed(slabs, s))) {
         const double lo = s;  // clang 14 (the fuzz build) cannot capture a structured binding
         const auto slab = std::find_if(slabs.begin(), slabs.end(), [&](const Slab& x) { return x.lo == lo; });
@@ -1141,6 +1145,29 @@ class Builder {
       return glm::normalize(chord);
     }
     return std::nullopt;
+  }
+
+  // Whether the band from `last` to the first cross section of the slab starting at lo, placed at `at`, folds
+  // over the slab's own band on one of its sides: a long first band arriving sideways (a neck standing off the
+  // skeleton) just before a thin slab squeezed against where the tube begins.
+  bool slabFolds(const StemPolyline& poly, const Ring& last, const std::vector<Slab>& slabs, double lo, double at) const {
+    const auto slab = std::find_if(slabs.begin(), slabs.end(), [&](const Slab& x) { return x.lo == lo; });
+    if (slab == slabs.end() || slab->hi <= at) return false;
+    const RingFrame frame = transportFrame(last.frame, poly.direction(at));
+    const std::array<Vec3, 4> a = ringCorners(poly, last.frame, at, slab->need), b = ringCorners(poly, frame, slab->hi, slab->need);
+    for (std::uint32_t k = 0; k < 4; ++k) {
+      const std::uint32_t j = (k + 1) % 4;
+      const QuadCorners first{{position(last.v[k]), position(last.v[j]), a[j], a[k]}, {last.v[k], last.v[j], kUnmade + j, kUnmade + k}};
+      const QuadCorners next{{a[k], a[j], b[j], b[k]}, {kUnmade + k, kUnmade + j, kUnmade + 4 + j, kUnmade + 4 + k}};
+      if (quadsMeet(first, next)) return true;
+    }
+    return false;
+  }
+
+  static double slabHi(const std::vector<Slab>& slabs, double lo) {
+    for (const Slab& slab : slabs)
+      if (slab.lo == lo) return slab.hi;
+    return lo;
   }
 
   // A cross section none of whose corners is a port's yet.
