@@ -52,6 +52,12 @@ std::vector<std::filesystem::path> presetFiles() {
   return out;
 }
 
+// An ABOP plant among the presets, grown at the default seed.
+Skeleton growPlant(const std::string& name) {
+  const std::string file = std::string(ARBOR_ASSET_DIR) + "/lsystems/" + name + ".lsys";
+  return readLsystemModel(readFile(file), file).grow({});
+}
+
 bool frameIsOrthonormal(const TurtleState& t, double tolerance) {
   return std::abs(glm::length(t.heading) - 1) < tolerance && std::abs(glm::length(t.left) - 1) < tolerance &&
          std::abs(glm::length(t.up) - 1) < tolerance && std::abs(glm::dot(t.heading, t.left)) < tolerance &&
@@ -333,8 +339,7 @@ TEST_CASE("a tube passes its stem's branch points within their radius where thei
   // parent and neighbours. Checked between consecutive cross sections on the skeleton.
   for (const char* name : {"fig-1-24c", "fig-1-24f", "fig-1-31a"}) {
     INFO(name);
-    const std::string file = std::string(ARBOR_ASSET_DIR) + "/lsystems/" + name + ".lsys";
-    const Skeleton s = readLsystemModel(readFile(file), file).grow({});
+    const Skeleton s = growPlant(name);
     const TreeMesh tree = buildTreeMesh(s);
     std::vector<bool> meshed(s.stems.size(), false);
     for (int stem : tree.quadStem)
@@ -379,8 +384,7 @@ TEST_CASE("the ABOP plants' mesh-made pairs, folds and neck crossings stay at th
                             Measured{"fig-1-25", 107, 0, 0}, Measured{"fig-1-27", 0, 0, 10}, Measured{"fig-1-31a", 186, 0, 6},
                             Measured{"fig-2-6a", 4, 0, 0}, Measured{"fig-2-7a", 0, 0, 0}, Measured{"fig-2-8a", 0, 0, 0}}) {
     INFO(m.plant);
-    const std::string file = std::string(ARBOR_ASSET_DIR) + "/lsystems/" + m.plant + ".lsys";
-    const Skeleton s = readLsystemModel(readFile(file), file).grow({});
+    const Skeleton s = growPlant(m.plant);
     const SelfIntersectionReport r = checkSelfIntersections(buildTreeMesh(s), s);
     CHECK(r.meshMade * 10 <= m.meshMade * 11);
     CHECK(r.folds * 10 <= m.folds * 11);

@@ -1112,19 +1112,14 @@ class Builder {
       // at seeds 1-3: mesh-made pairs 1,830 -> 1,724, folds 19 -> 8 (any cross section as the slab's first: the
       // same, but a vertex of a random branch graph then had valence 7 or 8).
       double at = s;
-      if (role == -1 && last.v == collar && unused(last) && slabFolds(poly, last, slabs, s, s) &&
-          ringAhead(poly, last, slabHi(slabs, s), slabNeed(slabs, s)))
-        continue;
-      if (role == -1 && !ringAhead(poly, last, s, slabNeed(slabs, s))) {
-        const double lo = s;  // clang 14 (the fuzz build) cannot capture a structured binding
-        const auto slab = std::find_if(slabs.begin(), slabs.end(), [&](const Slab& x) { return x.lo == lo; });
-        if (slab != slabs.end()) {
-          const double step = 0.1 * slab->need;
-          for (double a = s + step; a < slab->hi - 0.3 * slab->need && at == s; a += step) {
-            if (ringAhead(poly, last, a, slab->need)) at = a;
-          }
-          if (at == s && unused(last) && ringAhead(poly, last, slab->hi, slab->need)) continue;
+      const Slab* slab = role == -1 ? slabStartingAt(slabs, s) : nullptr;
+      if (slab && last.v == collar && unused(last) && slabFolds(poly, last, *slab) && ringAhead(poly, last, slab->hi, slab->need)) continue;
+      if (slab && !ringAhead(poly, last, s, slabNeed(slabs, s))) {
+        const double step = 0.1 * slab->need;
+        for (double a = s + step; a < slab->hi - 0.3 * slab->need && at == s; a += step) {
+          if (ringAhead(poly, last, a, slab->need)) at = a;
         }
+        if (at == s && unused(last) && ringAhead(poly, last, slab->hi, slab->need)) continue;
       }
       const Ring next = makeRing(stem, poly, last, at, role >= -1 ? slabNeed(slabs, s) : 0.0, false, slabAxis(poly, slabs, s, role));
       if (role < 0) band(last, next);
@@ -1147,14 +1142,19 @@ class Builder {
     return std::nullopt;
   }
 
-  // Whether the band from `last` to the first cross section of the slab starting at lo, placed at `at`, folds
-  // over the slab's own band on one of its sides: a long first band arriving sideways (a neck standing off the
-  // skeleton) just before a thin slab squeezed against where the tube begins.
-  bool slabFolds(const StemPolyline& poly, const Ring& last, const std::vector<Slab>& slabs, double lo, double at) const {
-    const auto slab = std::find_if(slabs.begin(), slabs.end(), [&](const Slab& x) { return x.lo == lo; });
-    if (slab == slabs.end() || slab->hi <= at) return false;
-    const RingFrame frame = transportFrame(last.frame, poly.direction(at));
-    const std::array<Vec3, 4> a = ringCorners(poly, last.frame, at, slab->need), b = ringCorners(poly, frame, slab->hi, slab->need);
+  // The slab whose first cross section is at arc length lo (null: none).
+  static const Slab* slabStartingAt(const std::vector<Slab>& slabs, double lo) {
+    const auto slab = std::find_if(slabs.begin(), slabs.end(), [lo](const Slab& x) { return x.lo == lo; });
+    return slab == slabs.end() ? nullptr : &*slab;
+  }
+
+  // Whether the band from `last` to the slab's first cross section folds over the slab's own band on one of its
+  // sides: a long first band arriving sideways (a neck standing off the skeleton) just before a thin slab squeezed
+  // against where the tube begins.
+  bool slabFolds(const StemPolyline& poly, const Ring& last, const Slab& slab) const {
+    if (slab.hi <= slab.lo) return false;
+    const RingFrame frame = transportFrame(last.frame, poly.direction(slab.lo));
+    const std::array<Vec3, 4> a = ringCorners(poly, last.frame, slab.lo, slab.need), b = ringCorners(poly, frame, slab.hi, slab.need);
     for (std::uint32_t k = 0; k < 4; ++k) {
       const std::uint32_t j = (k + 1) % 4;
       const QuadCorners first{{position(last.v[k]), position(last.v[j]), a[j], a[k]}, {last.v[k], last.v[j], kUnmade + j, kUnmade + k}};
@@ -1162,12 +1162,6 @@ class Builder {
       if (quadsMeet(first, next)) return true;
     }
     return false;
-  }
-
-  static double slabHi(const std::vector<Slab>& slabs, double lo) {
-    for (const Slab& slab : slabs)
-      if (slab.lo == lo) return slab.hi;
-    return lo;
   }
 
   // A cross section none of whose corners is a port's yet.
