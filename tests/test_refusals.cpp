@@ -167,6 +167,7 @@ TEST_CASE("command-line numbers must be finite, in range and whole where they co
       {"render palm --size 4294967360x64 --out " + png, "--size"},
       {"view palm --tess nan --offscreen --out " + arbor::test::tempPath("view-nan"), "--tess"},
       {"view palm --forest -1 --offscreen --out " + arbor::test::tempPath("view-nan"), "--forest"},
+      {"view palm --anisotropy 0.5 --offscreen --out " + arbor::test::tempPath("view-nan"), "--anisotropy"},
       {"view palm --events 1:resize=4294967360x1 --offscreen --out " + arbor::test::tempPath("view-nan"), "--events"},
       {"bench tess palm --factors 1,,2", "--factors"},
       {"bench tess palm --factors ,,", "--factors"},

@@ -70,10 +70,10 @@ TreeRenderer::TreeRenderer(const vk::VulkanContext& context, VkRenderPass render
   barkColor_ = upload(textures.barkColor, true);
   barkHeight_ = upload(textures.barkHeight, false);
   leafAtlas_ = upload(textures.leafAtlas, true);
-  sampler_ = vk::createRepeatSampler(context, static_cast<float>(barkColor_.mipLevels()));
+  sampler_ = vk::createRepeatSampler(context, static_cast<float>(barkColor_.mipLevels()), textures.barkAnisotropy);
   // Coarse MIP levels average a cutout's alpha below the leaf shader's test and whole leaves would vanish with
   // distance: the atlas stops at the level where the blades still hold their shape.
-  leafSampler_ = vk::createRepeatSampler(context, 3.0f, false);  // clamped + anisotropic: lavapipe minutes/frame
+  leafSampler_ = vk::createRepeatSampler(context, 3.0f, 1.0f);  // clamped + anisotropic: lavapipe minutes/frame
   for (FrameSlot& frame : slots_) frame.scene = vk::hostBuffer(context, sizeof(SceneUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
   setCapture(0);
   const std::vector<std::uint32_t> cards = cardIndices(kCardsPerDraw);

@@ -20,6 +20,9 @@ namespace arbor::render {
 // The renderer's textures: bark colour and height (tileable), the leaf atlas.
 struct TreeTextures {
   Image barkColor, barkHeight, leafAtlas;
+  // The bark sampler's largest anisotropy (1: trilinear only). At 8 lavapipe spends about a third of the viewer's
+  // frame on bark lookups (docs/PERFORMANCE.md), so the viewer asks for 1 there.
+  float barkAnisotropy = 8.0f;
 };
 
 struct RenderSettings {

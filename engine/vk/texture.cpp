@@ -136,16 +136,16 @@ GpuImage uploadTexture(const VulkanContext& context, const std::vector<std::uint
   return image;
 }
 
-VkSampler createRepeatSampler(const VulkanContext& context, float maxLod, bool anisotropic) {
+VkSampler createRepeatSampler(const VulkanContext& context, float maxLod, float maxAnisotropy) {
   VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
   info.magFilter = VK_FILTER_LINEAR;
   info.minFilter = VK_FILTER_LINEAR;
   info.mipmapMode = VK_SAMPLER_MIPMAP_MODE_LINEAR;
   info.addressModeU = info.addressModeV = info.addressModeW = VK_SAMPLER_ADDRESS_MODE_REPEAT;
   info.maxLod = maxLod;
-  const bool useAnisotropy = anisotropic && context.features().samplerAnisotropy;
+  const bool useAnisotropy = maxAnisotropy > 1.0f && context.features().samplerAnisotropy;
   info.anisotropyEnable = useAnisotropy;
-  info.maxAnisotropy = useAnisotropy ? std::min(8.0f, context.properties().limits.maxSamplerAnisotropy) : 1.0f;
+  info.maxAnisotropy = useAnisotropy ? std::min(maxAnisotropy, context.properties().limits.maxSamplerAnisotropy) : 1.0f;
   VkSampler sampler = VK_NULL_HANDLE;
   check(vkCreateSampler(context.device(), &info, nullptr, &sampler), "vkCreateSampler");
   return sampler;

@@ -45,8 +45,8 @@ void transitionImage(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspe
 GpuImage uploadTexture(const VulkanContext& context, const std::vector<std::uint8_t>& rgba, std::uint32_t width,
                        std::uint32_t height, bool srgb);
 
-// Repeat addressing, trilinear filtering, anisotropy where the device has it and it is wanted (lavapipe takes
-// minutes per frame for anisotropic lookups whose level maxLod clamps).
-VkSampler createRepeatSampler(const VulkanContext& context, float maxLod, bool anisotropic = true);
+// Repeat addressing, trilinear filtering, anisotropy up to `maxAnisotropy` where the device has it (1: none;
+// lavapipe takes minutes per frame for anisotropic lookups whose level maxLod clamps).
+VkSampler createRepeatSampler(const VulkanContext& context, float maxLod, float maxAnisotropy);
 
 }  // namespace arbor::vk

@@ -38,10 +38,16 @@ std::string describe(const render::ForestFrame& f) {
 // What the options leave open, chosen for the device: lavapipe gets fewer meshed levels and a lower largest
 // adaptive factor (it splits tessellated draws by the largest: 15 patches a draw at 64, 226 at 16).
 // Lavapipe tessellates the whole mesh of a large tree in seconds, so there the nearest trees already fake their
-// deepest level.
+// deepest level; and it samples anisotropically in software, a third of a single tree's frame at 8.
 void applyDeviceDefaults(const ViewerOptions& o, const vk::VulkanContext& context, ViewState& state) {
   state.detail = o.detail.value_or(context.isLavapipe() ? render::DetailDistances{0.0f, 15.0f, 60.0f} : render::DetailDistances{});
   if (!o.maxTessGiven && context.isLavapipe()) state.settings.maxLevel = 16.0f;
+}
+
+render::TreeTextures viewerTextures(const ViewerOptions& o, const vk::VulkanContext& context) {
+  render::TreeTextures textures = render::loadTreeTextures(cli::assetDirectory());
+  textures.barkAnisotropy = o.anisotropy.value_or(context.isLavapipe() ? 1.0f : textures.barkAnisotropy);
+  return textures;
 }
 
 // The ground fades into the horizon beyond the forest as seen from the eye.
@@ -102,7 +108,7 @@ int runViewer(const ViewerOptions& o, ViewState& state, ViewerScene& scene) {
   int status = 0;
   {
     const std::unique_ptr<FrameTarget> target = win ? windowTarget(context, *win, surface, o.vsync) : offscreenTarget(context, {o.width, o.height});
-    render::TreeRenderer renderer(context, target->renderPass(), VK_SAMPLE_COUNT_1_BIT, render::loadTreeTextures(cli::assetDirectory()));
+    render::TreeRenderer renderer(context, target->renderPass(), VK_SAMPLE_COUNT_1_BIT, viewerTextures(o, context));
     // However the loop ends, the scene's buffers go before the device does.
     const std::unique_ptr<ViewerScene, void (*)(ViewerScene*)> stopScene(&scene, [](ViewerScene* sc) { sc->stop(); });
     scene.start(context, renderer);

@@ -63,6 +63,7 @@ struct ViewerOptions {
   bool validation = false;
   std::optional<render::DetailDistances> detail;  // none: chosen for the device
   bool maxTessGiven = false;                       // else lavapipe's largest factor is lowered
+  std::optional<float> anisotropy;                 // the bark's texture filtering; none: chosen for the device
 };
 
 // Runs until the window closes (Esc) or the script ends; 0, or kExitFailure on validation errors.
