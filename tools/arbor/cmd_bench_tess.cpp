@@ -38,6 +38,7 @@ struct BenchTessOptions {
   std::string adaptive;
   std::string size = "1280x720";
   int frames = 5;
+  float anisotropy = 0.0f;  // 0: TreeTextures' default
   std::string device;
   bool validation = false;
   std::string csv;
@@ -135,7 +136,7 @@ int runBenchTess(const BenchTessOptions& o) {
 
   const TreeSource source = loadTreeArgument(o.species, nullptr, o.angles);
   vk::VulkanContext context(vulkanOptions(o.validation, o.device));
-  render::RenderSession session(context, width, height, VK_SAMPLE_COUNT_1_BIT, render::loadTreeTextures(assetDirectory()));
+  render::RenderSession session(context, width, height, VK_SAMPLE_COUNT_1_BIT, treeTextures(o.anisotropy));
   const float aspect = static_cast<float>(width) / static_cast<float>(height);
 
   BenchScene scene;
@@ -348,6 +349,7 @@ void addBenchTessCommand(CLI::App& bench, Action& action) {
   cmd->add_option("--adaptive", o->adaptive, "Adaptive targets: edge lengths in pixels, 0.5 to 1000");
   cmd->add_option("--size", o->size, "Image size WIDTHxHEIGHT")->capture_default_str();
   cmd->add_option("--frames", o->frames, "Timed frames per cell, after one warm-up")->check(Whole(1, 10000))->capture_default_str();
+  addAnisotropyOption(cmd, o->anisotropy, "8, as render draws; the viewer uses 1 on lavapipe");
   cmd->add_option("--device", o->device, "Prefer the Vulkan device whose name contains this");
   cmd->add_flag("--validation", o->validation, "Enable the Khronos validation layer (also ARBOR_VALIDATION=1)");
   cmd->add_option("--csv", o->csv, "Also write the figures as CSV");

@@ -34,6 +34,7 @@ struct RenderOptions {
   float tess = 8.0f;
   float adaptive = 0.0f;
   float displace = 0.0f;
+  float anisotropy = 0.0f;  // 0: TreeTextures' default
   std::string size = "640x800";
   std::string camera;
   float azimuth = 25.0f, elevation = 6.0f;
@@ -102,7 +103,7 @@ int runRender(const RenderOptions& o) {
   const std::vector<ImpostorSegment>& impostors = geometry.impostors;
 
   vk::VulkanContext context(vulkanOptions(o.validation, o.device));
-  const auto textures = render::loadTreeTextures(assetDirectory());
+  const auto textures = treeTextures(o.anisotropy);
   const auto samples = static_cast<VkSampleCountFlagBits>(o.msaa);
   render::RenderSession session(context, width, height, samples, textures);
   session.setTree(tree.mesh, patches, skeleton.leaves, impostors, build.wind ? &geometry.wind : nullptr);
@@ -186,6 +187,7 @@ void addRenderCommand(CLI::App& app, Action& action) {
   cmd->add_option("--adaptive", o->adaptive, "Adaptive tessellation: target edge length in pixels (overrides --tess)")
       ->check(Number(0.5, 1000.0));
   cmd->add_option("--displace", o->displace, "Displacement scale s in (d - b) r s (0: off)")->check(Number(-10.0, 10.0));
+  addAnisotropyOption(cmd, o->anisotropy, "8");
   cmd->add_option("--size", o->size, "Image size WIDTHxHEIGHT")->capture_default_str();
   cmd->add_option("--camera", o->camera, "Camera as ex,ey,ez,tx,ty,tz[,fov degrees] (default: framed on the tree)");
   cmd->add_option("--azimuth", o->azimuth, "Framing camera azimuth in degrees")->check(Number(-3600.0, 3600.0))->capture_default_str();

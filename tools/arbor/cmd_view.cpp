@@ -162,10 +162,7 @@ void addViewCommand(CLI::App& app, Action& action) {
   cmd->add_option("--adaptive", o->adaptive, "Adaptive tessellation: target edge length in pixels")->check(Number(0.5, 1000.0))->capture_default_str();
   cmd->add_option("--max-tess", o->maxTess, "Largest adaptive factor (default 64; lavapipe: 16, it splits draws by the largest)")
       ->check(Number(1.0, 64.0));
-  cmd->add_option("--anisotropy", o->anisotropy,
-                  "Largest anisotropy of the bark's texture filtering, 1 (trilinear only) to 16 (default 8; lavapipe: 1, 8 costs it about a "
-                  "third of the frame)")
-      ->check(Number(1.0, 16.0));
+  addAnisotropyOption(cmd, o->anisotropy, "8; lavapipe: 1, where 8 costs about a third of the frame");
   cmd->add_option("--displace", o->displace, "Displacement scale")->check(Number(-10.0, 10.0));
   cmd->add_flag("--no-leaves", o->noLeaves, "Leave the leaves out");
   cmd->add_option("--leaf-lod", o->leafLod, "All leaves up to this distance (m), then thinning (0: all)")->check(Number(0.0, 10000.0))->capture_default_str();

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <cstdlib>
 
+#include "assets.hpp"
 #include "common/input_error.hpp"
 
 namespace arbor::cli {
@@ -39,6 +40,17 @@ bool reportValidationErrors(const vk::VulkanContext& context) {
   if (context.validationErrors() == 0) return false;
   std::fprintf(stderr, "arbor: error: %u Vulkan validation errors (see above)\n", context.validationErrors());
   return true;
+}
+
+void addAnisotropyOption(CLI::App* cmd, float& anisotropy, const std::string& byDevice) {
+  cmd->add_option("--anisotropy", anisotropy, "Largest anisotropy of the bark's texture filtering, 1 (trilinear only) to 16 (default " + byDevice + ")")
+      ->check(Number(1.0, 16.0));
+}
+
+render::TreeTextures treeTextures(float anisotropy) {
+  render::TreeTextures textures = render::loadTreeTextures(assetDirectory());
+  if (anisotropy > 0.0f) textures.barkAnisotropy = anisotropy;
+  return textures;
 }
 
 glm::vec3 parseLight(const std::string& text) {

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "cli_values.hpp"
+#include "render/render_session.hpp"
 #include "render/renderer.hpp"
 #include "vk/context.hpp"
 
@@ -15,6 +16,10 @@ render::RenderMode parseMode(const std::string& mode, const std::string& field =
 std::string modeHelp();
 // The same as a unit vector towards the sun.
 glm::vec3 parseLight(const std::string& text);
+// --anisotropy: the bark's largest anisotropic filtering, 1 (trilinear only) to 16; `byDevice` names the default.
+void addAnisotropyOption(CLI::App* cmd, float& anisotropy, const std::string& byDevice);
+// The textures with the bark filtered as asked (0: TreeTextures' own default).
+render::TreeTextures treeTextures(float anisotropy);
 // On when asked for, when ARBOR_VALIDATION=1 (the tests set it), and always in debug builds.
 bool validationWanted(bool flag);
 // What every Vulkan command asks of the context: validation as validationWanted decides, the preferred device.
