@@ -429,6 +429,20 @@ TEST_CASE("a slab squeezed against the tube's start takes the collar as its firs
   }
 }
 
+TEST_CASE("a steep child's cross section right after its collar is left out where the two first bands would cross", "[mesh][real-data]") {
+  const std::vector<std::string> files = test::arbaroSpeciesFiles(ARBOR_SPECIES_DIR);
+  if (files.empty()) return;  // arbaroSpeciesFiles said why
+  // The fan palm file at seed 2: a frond's collar stands half a metre from where its tube is back on its
+  // skeleton, and the band between them twisted into the next one (a fold, 2 mesh-made pairs with it).
+  for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+    INFO("seed " << seed);
+    const Skeleton s = growSpeciesFile("fanpalm", seed);
+    const SelfIntersectionReport r = checkSelfIntersections(buildTreeMesh(s), s);
+    CHECK(r.folds == 0);
+    if (seed == 2) CHECK(r.meshMade == 0);
+  }
+}
+
 TEST_CASE("a limb running up past its parent's tip begins its tube there, not where it leaves the parent's line", "[mesh][real-data]") {
   const std::vector<std::string> files = test::arbaroSpeciesFiles(ARBOR_SPECIES_DIR);
   if (files.empty()) return;  // arbaroSpeciesFiles said why

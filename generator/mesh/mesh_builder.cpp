@@ -1030,8 +1030,10 @@ class Builder {
     if ((steep || thick) && sLo < stations.front().first - 4.0 * gap(sLo) && glm::dot(poly.position(sLo) - last.center, last.frame.T) > 0.0) {
       // Where the skeleton turns there, the cross section moves on by quarter radii until its band runs forwards.
       double at = sLo;
-      while (!ringAhead(poly, last, at) && at + gap(at) < stations.front().first - 4.0 * gap(sLo)) at += 0.5 * gap(at);
-      if (ringAhead(poly, last, at)) {
+      const double next = stations.front().first;
+      auto fits = [&](double s) { return ringAhead(poly, last, s) && !firstBandsCross(poly, last, s, next); };
+      while (!fits(at) && at + gap(at) < next - 4.0 * gap(sLo)) at += 0.5 * gap(at);
+      if (fits(at)) {
         last = advance(stem, poly, last, at);
         sLo = at;
       }
@@ -1161,6 +1163,24 @@ class Builder {
       const QuadCorners next{{a[k], a[j], b[j], b[k]}, {kUnmade + k, kUnmade + j, kUnmade + 4 + j, kUnmade + 4 + k}};
       if (quadsMeet(first, next)) return true;
     }
+    return false;
+  }
+
+  // Whether the band from `last` to a cross section at s, or the band from there to one at `next`, crosses itself or
+  // the other: a collar beside its skeleton (on a parent's neck port) level with that cross section makes a band
+  // that runs sideways and twists into the next.
+  bool firstBandsCross(const StemPolyline& poly, const Ring& last, double s, double next) const {
+    const RingFrame frame = transportFrame(last.frame, poly.direction(s));
+    const std::array<Vec3, 4> a = ringCorners(poly, last.frame, s), b = ringCorners(poly, frame, next);
+    std::array<QuadCorners, 8> quads;
+    for (std::uint32_t k = 0; k < 4; ++k) {
+      const std::uint32_t j = (k + 1) % 4;
+      quads[k] = {{position(last.v[k]), position(last.v[j]), a[j], a[k]}, {last.v[k], last.v[j], kUnmade + j, kUnmade + k}};
+      quads[4 + k] = {{a[k], a[j], b[j], b[k]}, {kUnmade + k, kUnmade + j, kUnmade + 4 + j, kUnmade + 4 + k}};
+    }
+    for (std::size_t i = 0; i < quads.size(); ++i)
+      for (std::size_t j = i + 1; j < quads.size(); ++j)
+        if (quadsMeet(quads[i], quads[j])) return true;
     return false;
   }
 
