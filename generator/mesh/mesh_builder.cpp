@@ -1150,19 +1150,28 @@ class Builder {
     return slab == slabs.end() ? nullptr : &*slab;
   }
 
+  // The bands cross sections at s and then at `next` would make, not yet built: the four quads from `last` to the
+  // one at s, then the four from there to the one at `next` (side k of each at k and 4 + k).
+  std::array<QuadCorners, 8> bandsTo(const StemPolyline& poly, const Ring& last, double s, double next, double need) const {
+    const RingFrame frame = transportFrame(last.frame, poly.direction(s));
+    const std::array<Vec3, 4> a = ringCorners(poly, last.frame, s, need), b = ringCorners(poly, frame, next, need);
+    std::array<QuadCorners, 8> quads;
+    for (std::uint32_t k = 0; k < 4; ++k) {
+      const std::uint32_t j = (k + 1) % 4;
+      quads[k] = {{position(last.v[k]), position(last.v[j]), a[j], a[k]}, {last.v[k], last.v[j], kUnmade + j, kUnmade + k}};
+      quads[4 + k] = {{a[k], a[j], b[j], b[k]}, {kUnmade + k, kUnmade + j, kUnmade + 4 + j, kUnmade + 4 + k}};
+    }
+    return quads;
+  }
+
   // Whether the band from `last` to the slab's first cross section folds over the slab's own band on one of its
   // sides: a long first band arriving sideways (a neck standing off the skeleton) just before a thin slab squeezed
   // against where the tube begins.
   bool slabFolds(const StemPolyline& poly, const Ring& last, const Slab& slab) const {
     if (slab.hi <= slab.lo) return false;
-    const RingFrame frame = transportFrame(last.frame, poly.direction(slab.lo));
-    const std::array<Vec3, 4> a = ringCorners(poly, last.frame, slab.lo, slab.need), b = ringCorners(poly, frame, slab.hi, slab.need);
-    for (std::uint32_t k = 0; k < 4; ++k) {
-      const std::uint32_t j = (k + 1) % 4;
-      const QuadCorners first{{position(last.v[k]), position(last.v[j]), a[j], a[k]}, {last.v[k], last.v[j], kUnmade + j, kUnmade + k}};
-      const QuadCorners next{{a[k], a[j], b[j], b[k]}, {kUnmade + k, kUnmade + j, kUnmade + 4 + j, kUnmade + 4 + k}};
-      if (quadsMeet(first, next)) return true;
-    }
+    const std::array<QuadCorners, 8> quads = bandsTo(poly, last, slab.lo, slab.hi, slab.need);
+    for (std::size_t k = 0; k < 4; ++k)
+      if (quadsMeet(quads[k], quads[4 + k])) return true;
     return false;
   }
 
@@ -1170,14 +1179,7 @@ class Builder {
   // the other: a collar beside its skeleton (on a parent's neck port) level with that cross section makes a band
   // that runs sideways and twists into the next.
   bool firstBandsCross(const StemPolyline& poly, const Ring& last, double s, double next) const {
-    const RingFrame frame = transportFrame(last.frame, poly.direction(s));
-    const std::array<Vec3, 4> a = ringCorners(poly, last.frame, s), b = ringCorners(poly, frame, next);
-    std::array<QuadCorners, 8> quads;
-    for (std::uint32_t k = 0; k < 4; ++k) {
-      const std::uint32_t j = (k + 1) % 4;
-      quads[k] = {{position(last.v[k]), position(last.v[j]), a[j], a[k]}, {last.v[k], last.v[j], kUnmade + j, kUnmade + k}};
-      quads[4 + k] = {{a[k], a[j], b[j], b[k]}, {kUnmade + k, kUnmade + j, kUnmade + 4 + j, kUnmade + 4 + k}};
-    }
+    const std::array<QuadCorners, 8> quads = bandsTo(poly, last, s, next, 0.0);
     for (std::size_t i = 0; i < quads.size(); ++i)
       for (std::size_t j = i + 1; j < quads.size(); ++j)
         if (quadsMeet(quads[i], quads[j])) return true;

@@ -44,10 +44,9 @@ void applyDeviceDefaults(const ViewerOptions& o, const vk::VulkanContext& contex
   if (!o.maxTessGiven && context.isLavapipe()) state.settings.maxLevel = 16.0f;
 }
 
+// The textures with the bark filtered as asked, or trilinearly on lavapipe (0: TreeTextures' own default).
 render::TreeTextures viewerTextures(const ViewerOptions& o, const vk::VulkanContext& context) {
-  render::TreeTextures textures = render::loadTreeTextures(cli::assetDirectory());
-  textures.barkAnisotropy = o.anisotropy.value_or(context.isLavapipe() ? 1.0f : textures.barkAnisotropy);
-  return textures;
+  return cli::treeTextures(o.anisotropy.value_or(context.isLavapipe() ? 1.0f : 0.0f));
 }
 
 // The ground fades into the horizon beyond the forest as seen from the eye.
