@@ -10,6 +10,7 @@
 #include <numbers>
 #include <optional>
 #include <stdexcept>
+#include <unordered_map>
 #include <utility>
 
 #include "common/input_error.hpp"
@@ -178,6 +179,13 @@ class Builder {
     double tolerance = 0.0;
   };
   std::optional<Inset> inset_;
+  // The first bands of the current parent's children made so far: split clones leaving within a few degrees of
+  // each other through ports that share an edge folded one band over the other there.
+  struct SiblingBands {
+    std::vector<QuadCorners> quads;
+    std::unordered_map<std::uint32_t, std::vector<std::uint32_t>> atCorner;  // port corner -> quads from it
+  };
+  SiblingBands siblingBands_;
   int currentStem_ = -1;                   // stem whose faces are being emitted
   const PortStart* currentStart_ = nullptr;  // how that stem left its parent (null: a trunk)
   bool connectingMoved_ = false;           // the slab being connected holds children moved to the tube's start
@@ -286,6 +294,36 @@ class Builder {
     }
   }
 
+  // The band out of a child's port, kept for its later siblings to keep clear of.
+  void portBand(const Ring& port, const Ring& first) {
+    const std::size_t from = out_.mesh.quads.size();
+    band(port, first);
+    for (std::size_t f = from; f < out_.mesh.quads.size(); ++f) {
+      const auto& q = out_.mesh.quads[f];
+      const auto index = static_cast<std::uint32_t>(siblingBands_.quads.size());
+      siblingBands_.quads.push_back(QuadCorners{{position(q[0]), position(q[1]), position(q[2]), position(q[3])}, q});
+      for (std::uint32_t v : q) {
+        if (std::find(port.v.begin(), port.v.end(), v) != port.v.end()) siblingBands_.atCorner[v].push_back(index);
+      }
+    }
+  }
+
+  // Whether the band from port corners a (indices `port`) to corners b (not made yet) folds over the first band of
+  // a sibling whose port shares a corner with this one.
+  bool bandMeetsSiblings(const std::array<Vec3, 4>& a, const std::array<std::uint32_t, 4>& port, const std::array<Vec3, 4>& b) const {
+    if (siblingBands_.atCorner.empty()) return false;
+    for (std::uint32_t v : port) {
+      const auto it = siblingBands_.atCorner.find(v);
+      if (it == siblingBands_.atCorner.end()) continue;
+      for (std::uint32_t other : it->second) {
+        for (std::size_t i = 0; i < 4; ++i) {
+          if (quadsMeet(unmadeSide(a, port, b, i), siblingBands_.quads[other])) return true;
+        }
+      }
+    }
+    return false;
+  }
+
   Vec3 faceCenter(const std::array<std::uint32_t, 4>& q) const {
     return (position(q[0]) + position(q[1]) + position(q[2]) + position(q[3])) * 0.25;
   }
@@ -345,11 +383,14 @@ class Builder {
 
   void buildChildren(std::vector<std::pair<int, PortStart>>& children, std::size_t parentBegin) {
     const std::size_t parentEnd = out_.mesh.quads.size();
+    SiblingBands outerBands;
+    std::swap(outerBands, siblingBands_);
     for (auto& [child, start] : children) {
       start.parentFacesBegin = parentBegin;
       start.parentFacesEnd = parentEnd;
       buildStem(child, &start);
     }
+    siblingBands_ = std::move(outerBands);
     // The parent's grid is done with once all its children are fitted.
     if (!grids_.empty() && grids_.back()->begin == parentBegin && grids_.back()->end == parentEnd) grids_.pop_back();
   }
@@ -419,10 +460,10 @@ class Builder {
         const auto offsets = ringOffsets(frame, exitRadius * opt_.limitCompensation);
         const std::array<Vec3, 4> corners{c + offsets[0], c + offsets[1], c + offsets[2], c + offsets[3]};
         if (!bandCrossesParent(start, portCorners, corners, &q) && !bandFolds(portCorners, q, corners) &&
-            !bandMeetsInset(portCorners, q, corners)) {
+            !bandMeetsInset(portCorners, q, corners) && !bandMeetsSiblings(portCorners, q, corners)) {
           addPortUvw(q, port.tex);
           const Ring exit = emitRing(stem, c, frame, exitRadius, port.tex + barkTextureAdvance(glm::distance(c, center), exitRadius), s);
-          band(port, exit);
+          portBand(port, exit);
           sLo = sUnclear = s;
           return exit;
         }
@@ -444,20 +485,28 @@ class Builder {
     Vec3 exitDir = normal;
     double e = e0;
     int best = 0;  // 2: clear and near, 1: clear
-    for (const Vec3& dir : {preferred, normal}) {
-      for (double scale : {1.0, 1.6, 2.5}) {
-        const Vec3 c = center + dir * (e0 * scale);
-        // A child leaving straight against its port (dir = -d) leaves along the port first: backward connection.
-        const auto offsets = ringOffsets(transportFrame(port.frame, directionOr(dir + d, dir)), exitRadius * opt_.limitCompensation);
-        const std::array<Vec3, 4> corners{c + offsets[0], c + offsets[1], c + offsets[2], c + offsets[3]};
-        if (bandCrossesParent(start, portCorners, corners, &q) || bandMeetsInset(portCorners, q, corners)) continue;
-        const int score = std::abs(glm::dot(c - start.branchPoint, start.parentAxis)) <= along ? 2 : 1;
-        if (score > best) {
-          best = score;
-          exitDir = dir;
-          e = e0 * scale;
-        }
-        if (best == 2) break;
+    // A clone's collar leaning along its direction can fold over a sibling's band: leaning half as far, as near,
+    // comes before leaning farther out (a collar farther out moves the clone's tube and the children before it on).
+    const std::array<std::pair<Vec3, double>, 6> plain{{{preferred, 1.0}, {preferred, 1.6}, {preferred, 2.5}, {normal, 1.0},
+                                                        {normal, 1.6}, {normal, 2.5}}};
+    const Vec3 halfway = directionOr(normal + 2.0 * d, normal);
+    const std::array<std::pair<Vec3, double>, 9> cloned{{{preferred, 1.0}, {halfway, 1.0}, {preferred, 1.6}, {halfway, 1.6},
+                                                         {preferred, 2.5}, {halfway, 2.5}, {normal, 1.0}, {normal, 1.6}, {normal, 2.5}}};
+    const std::span<const std::pair<Vec3, double>> candidates = clone ? std::span<const std::pair<Vec3, double>>(cloned) : plain;
+    for (const auto& [dir, scale] : candidates) {
+      const Vec3 c = center + dir * (e0 * scale);
+      // A child leaving straight against its port (dir = -d) leaves along the port first: backward connection.
+      const auto offsets = ringOffsets(transportFrame(port.frame, directionOr(dir + d, dir)), exitRadius * opt_.limitCompensation);
+      const std::array<Vec3, 4> corners{c + offsets[0], c + offsets[1], c + offsets[2], c + offsets[3]};
+      if (bandCrossesParent(start, portCorners, corners, &q) || bandMeetsInset(portCorners, q, corners) ||
+          bandMeetsSiblings(portCorners, q, corners)) {
+        continue;
+      }
+      const int score = std::abs(glm::dot(c - start.branchPoint, start.parentAxis)) <= along ? 2 : 1;
+      if (score > best) {
+        best = score;
+        exitDir = dir;
+        e = e0 * scale;
       }
       if (best == 2) break;
     }
@@ -472,7 +521,7 @@ class Builder {
     sUnclear = sLo;
     sLo = clearOfParent(poly, start, exitFrame, exitCorners, sLo, 0.25 * std::max(portRadius, rc));
     const Ring exit = emitRing(stem, exitCenter, exitFrame, exitRadius, port.tex + barkTextureAdvance(e, exitRadius));
-    band(port, exit);
+    portBand(port, exit);
     return exit;
   }
 
@@ -495,10 +544,12 @@ class Builder {
     for (std::size_t k = 0; k < 4; ++k) {
       if (glm::dot(corners[k] - port.center, normal) <= 0.0 || glm::dot(c[k] - center, frame.T) >= 0.0) return std::nullopt;
     }
-    if (bandFolds(c, port.v, corners) || bandMeetsInset(c, port.v, corners, false)) return std::nullopt;
+    if (bandFolds(c, port.v, corners) || bandMeetsInset(c, port.v, corners, false) || bandMeetsSiblings(c, port.v, corners)) {
+      return std::nullopt;
+    }
     addPortUvw(port.v, port.tex);
     const Ring first = emitRing(stem, center, frame, radius, port.tex + barkTextureAdvance(glm::distance(center, port.center), rc), s);
-    band(port, first);
+    portBand(port, first);
     sLo = s;
     return first;
   }
