@@ -434,6 +434,45 @@ TEST_CASE("against stems but its parent, a child's wood starts where its axis le
   CHECK(report.meshMade == 1);
 }
 
+TEST_CASE("a mesh-made pair in the neck of a child leaving at under 34 degrees is at a shallow joint", "[mesh][self-intersection]") {
+  auto tilted = [](double degrees) {
+    Skeleton s = shallowChild();
+    s.nodes[3].world.position = Vec3(std::cos(radians(degrees)), 0, std::sin(radians(degrees)));
+    return s;
+  };
+  // Its axis leaves the parent's radius at R / tan(angle): past 1.5 R below 33.7 degrees.
+  CHECK(shallowJoint(tilted(20.0), 1));
+  CHECK(shallowJoint(tilted(33.0), 1));
+  CHECK_FALSE(shallowJoint(tilted(35.0), 1));
+  CHECK_FALSE(shallowJoint(tilted(160.0), 1));  // a backward child leaves straight out first
+  CHECK_FALSE(shallowJoint(tilted(20.0), 0));   // a trunk has no parent
+
+  // A quad of the child (stem 1) crossed by one of a thin trunk (stem 2) whose wood is far off: mesh-made.
+  auto check = [](const Skeleton& child, const std::vector<MeshRing>& rings) {
+    Skeleton s = child;
+    addStem(s, Vec3(0, -1, 5), Vec3(0, 1, 5), 0.005);
+    const Vec3 at(0.4, 0, 0.3);
+    QuadSoup q;
+    q.quad(at + Vec3(-0.05, -0.05, 0), at + Vec3(0.05, -0.05, 0), at + Vec3(0.05, 0.05, 0), at + Vec3(-0.05, 0.05, 0));
+    q.quad(at + Vec3(0, -0.1, -0.05), at + Vec3(0, 0.1, -0.05), at + Vec3(0, 0.1, 0.05), at + Vec3(0, -0.1, 0.05));
+    TreeMesh tree;
+    tree.mesh = q.mesh;
+    tree.quadStem = {1, 2};
+    tree.rings = rings;
+    const SelfIntersectionReport r = checkSelfIntersections(tree, s);
+    INFO(r.pairs << " pairs, " << r.skeletonMade << " skeleton-made");
+    REQUIRE(r.meshMade == 1);
+    CHECK(r.hits[0].shallowJoint == (r.meshMadeAtShallowJoints == 1));
+    return r.meshMadeAtShallowJoints;
+  };
+  const MeshRing collar{1, {0, 1, 2, 3}, Vec3(0.4, 0, 0.3), 0.0, 0.02, -1.0, false};
+  const MeshRing onSkeleton{1, {4, 5, 6, 7}, Vec3(0.6, 0, 0.2), 0.0, 0.02, 0.6, false};
+  CHECK(check(tilted(20.0), {collar}) == 1);              // a corner on the child's collar: its neck
+  CHECK(check(tilted(20.0), {}) == 0);                    // no cross section says where the neck is
+  CHECK(check(tilted(20.0), {onSkeleton, collar}) == 0);  // an off-skeleton ring past the first on it: a tip
+  CHECK(check(tilted(40.0), {collar}) == 0);              // a steep child's neck
+}
+
 TEST_CASE("where two stems' wood overlaps: near the crossing of their capsules, never for stems apart", "[mesh][self-intersection]") {
   const std::vector<Capsule> a{Capsule{Vec3(-1, 0, 0), Vec3(1, 0, 0), 0.1, 0.1}};
   const std::vector<Capsule> b{Capsule{Vec3(0, -1, 0.05), Vec3(0, 1, 0.05), 0.1, 0.1}};   // crosses a at the origin

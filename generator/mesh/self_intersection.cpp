@@ -100,6 +100,26 @@ bool unrelatedTo(const Skeleton& skeleton, int x, int p) {
   return relationOf(skeleton, x, p) == StemRelation::Other && collarParent(skeleton, x) != p;
 }
 
+// Per quad, whether it lies in its own stem's neck or first band: a corner on one of the stem's cross sections
+// before its first on the skeleton (an inset or a collar).
+std::vector<bool> neckQuads(const TreeMesh& tree) {
+  std::vector<int> neckOf(tree.mesh.vertexCount(), -1);
+  std::vector<bool> pastNeck;
+  for (const MeshRing& ring : tree.rings) {
+    if (ring.stem < 0) continue;
+    const auto stem = static_cast<std::size_t>(ring.stem);
+    if (pastNeck.size() <= stem) pastNeck.resize(stem + 1, false);
+    if (ring.arc >= 0.0) pastNeck[stem] = true;
+    if (pastNeck[stem]) continue;
+    for (std::uint32_t v : ring.vertices) neckOf[v] = ring.stem;
+  }
+  std::vector<bool> neck(tree.mesh.quads.size(), false);
+  for (std::size_t f = 0; f < neck.size() && f < tree.quadStem.size(); ++f) {
+    for (std::uint32_t v : tree.mesh.quads[f]) neck[f] = neck[f] || (tree.quadStem[f] >= 0 && neckOf[v] == tree.quadStem[f]);
+  }
+  return neck;
+}
+
 SelfIntersectionReport summarise(std::vector<QuadPairHit> hits, std::size_t quads, bool classified) {
   SelfIntersectionReport r;
   r.quads = quads;
@@ -110,6 +130,7 @@ SelfIntersectionReport summarise(std::vector<QuadPairHit> hits, std::size_t quad
     r.neckCrossings += h.relation == StemRelation::ParentChild || h.relation == StemRelation::CloneSource ? 1 : 0;
     r.skeletonMade += h.origin == PairOrigin::Skeleton ? 1 : 0;
     r.meshMade += h.origin == PairOrigin::Mesh ? 1 : 0;
+    r.meshMadeAtShallowJoints += h.shallowJoint ? 1 : 0;
   }
   r.hits = std::move(hits);
   return r;
@@ -202,6 +223,14 @@ SelfIntersectionReport checkSelfIntersections(const TreeMesh& tree, const Skelet
       }
     }
     h.origin = meets ? PairOrigin::Skeleton : PairOrigin::Mesh;
+  }
+  // Where issue 13's two joint floors meet: a shallow child's neck must leave its skeleton (docs/mesh.md).
+  const std::vector<bool> neck = neckQuads(tree);
+  std::vector<bool> shallow(skeleton.stems.size(), false);
+  for (std::size_t s = 0; s < shallow.size(); ++s) shallow[s] = shallowJoint(skeleton, static_cast<int>(s));
+  auto inShallowNeck = [&](std::uint32_t quad, int stem) { return stem >= 0 && neck[quad] && shallow[static_cast<std::size_t>(stem)]; };
+  for (QuadPairHit& h : hits) {
+    h.shallowJoint = h.origin == PairOrigin::Mesh && (inShallowNeck(h.a, h.stemA) || inShallowNeck(h.b, h.stemB));
   }
   SelfIntersectionReport r = summarise(std::move(hits), tree.mesh.quads.size(), true);
   r.milliseconds = millisecondsSince(start);

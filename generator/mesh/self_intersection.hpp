@@ -26,6 +26,8 @@ struct QuadPairHit {
   StemRelation relation = StemRelation::Hub;
   double reachA = 0, reachB = 0;  // the point's distance from each stem's skeleton axis, in its radii there (or
                                   // the radius its quad was built for, when larger: tips)
+  bool shallowJoint = false;      // mesh-made with a quad in the neck or first band of a child leaving at under 34
+                                  // degrees (shallowJoint in stem_capsules.hpp)
 };
 
 struct SelfIntersectionReport {
@@ -35,6 +37,7 @@ struct SelfIntersectionReport {
   std::size_t meshMade = 0;
   std::size_t folds = 0;          // pairs sharing an edge
   std::size_t neckCrossings = 0;  // a child's quad against its own parent's (or a clone's against its source's)
+  std::size_t meshMadeAtShallowJoints = 0;  // mesh-made pairs with shallowJoint set
   bool classified = false;        // false for a bare mesh: origins unknown
   double milliseconds = 0;
   std::vector<QuadPairHit> hits;  // sorted by (a, b)

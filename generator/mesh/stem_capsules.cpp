@@ -168,4 +168,17 @@ double parentClearance(const Skeleton& skeleton, int stem) {
   return kSurfaceReach * (attach.radius + firstRadius) / sine;
 }
 
+bool shallowJoint(const Skeleton& skeleton, int stem) {
+  const SkeletonStem& st = skeleton.stems[static_cast<std::size_t>(stem)];
+  if (st.parentStem < 0 || st.cloneOf >= 0 || st.attachNode < 0 || st.nodeCount == 0) return false;
+  const SkeletonNode& attach = skeleton.nodes[static_cast<std::size_t>(st.attachNode)];
+  const SkeletonNode& first = skeleton.nodes[static_cast<std::size_t>(st.firstNode)];
+  const Vec3 edge = first.world.position - attach.world.position;
+  const double len = glm::length(edge);
+  if (!(len > 0.0)) return false;
+  const Vec3 along = attach.world.direction();
+  const double cosine = glm::dot(along, edge / len), sine = glm::length(glm::cross(along, edge / len));
+  return cosine > 0.0 && 1.5 * sine < cosine;  // the axis leaves the radius R at R / tan(angle) > 1.5 R along
+}
+
 }  // namespace arbor

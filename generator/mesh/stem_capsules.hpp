@@ -26,6 +26,11 @@ enum class StemStart {
 // radii over the sine of the angle between them, with the surface's reach; 0 for trunks and clones.
 double parentClearance(const Skeleton& skeleton, int stem);
 
+// Whether a child leaves its parent at under 34 degrees (tan 34 = 1 / 1.5): its skeleton stays inside the parent's
+// radius for more than 1.5 parent radii along it, farther than issue 13's joint floor lets its first cross section
+// stand, so its neck and first band must leave the skeleton. False for trunks, clones and backward children.
+bool shallowJoint(const Skeleton& skeleton, int stem);
+
 // Per stem, its edges as capsules, a child's or clone's starting as `start` says.
 std::vector<std::vector<Capsule>> stemCapsules(const Skeleton& skeleton, StemStart start = StemStart::ClearOfParent);
 

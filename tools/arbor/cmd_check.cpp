@@ -74,6 +74,9 @@ void printSummary(const Checked& c, const SelfIntersectionReport& r) {
   if (r.classified) {
     std::printf("  skeleton-made       %zu  (the skeleton's branches cross there: Weber-Penn allows it)\n", r.skeletonMade);
     std::printf("  mesh-made           %zu  (no crossing in the skeleton there: the mesher's doing)\n", r.meshMade);
+    std::printf("    at shallow joints %zu  (in the neck or first band of a child leaving its parent at under 34 degrees, whose\n"
+                "                       skeleton stays inside the parent past the 1.5 parent radii its first cross section may stand)\n",
+                r.meshMadeAtShallowJoints);
   }
   std::printf("  folds               %zu  (pairs sharing an edge)\n", r.folds);
   if (r.classified) {
@@ -117,6 +120,7 @@ void writeJson(const std::string& path, const CheckOptions& o, const Checked& c,
     if (r.classified) {
       w.field("skeletonMade", static_cast<std::int64_t>(r.skeletonMade)).field("meshMade", static_cast<std::int64_t>(r.meshMade));
       w.field("neckCrossings", static_cast<std::int64_t>(r.neckCrossings));
+      w.field("meshMadeAtShallowJoints", static_cast<std::int64_t>(r.meshMadeAtShallowJoints));
       w.field("fakedStems", static_cast<std::int64_t>(c.tree.fakedStems.size()));
     }
     w.field("folds", static_cast<std::int64_t>(r.folds)).field("milliseconds", r.milliseconds);
@@ -128,7 +132,7 @@ void writeJson(const std::string& path, const CheckOptions& o, const Checked& c,
       w.field("levelA", stemLevel(c, h.stemA)).field("levelB", stemLevel(c, h.stemB));
       w.field("contact", quadContactName(h.contact)).field("relation", stemRelationName(h.relation));
       w.field("origin", pairOriginName(h.origin));
-      if (r.classified) w.field("reachA", h.reachA).field("reachB", h.reachB);
+      if (r.classified) w.field("reachA", h.reachA).field("reachB", h.reachB).field("shallowJoint", h.shallowJoint);
       w.key("point").vec3(h.point.x, h.point.y, h.point.z);
       w.endObject();
       if (w.pending() > (1u << 20)) w.flushTo(out);
