@@ -443,6 +443,19 @@ TEST_CASE("a steep child's cross section right after its collar is left out wher
   }
 }
 
+TEST_CASE("a child's collar is one from which its tube clears the parent before the stem ends, where one is near", "[mesh][self-intersection][real-data]") {
+  const std::vector<std::string> files = test::arbaroSpeciesFiles(ARBOR_SPECIES_DIR);
+  if (files.empty()) return;  // arbaroSpeciesFiles said why
+  // The larch file at seed 2: a twig 0.17 m long hooks down off its limb; from the first collar tried, its band
+  // cleared the limb only at the twig's tip, and that one band ran back through the limb (6 neck crossings). The
+  // cottonwood file at seed 2: a limb's tube began only at its tip, and its one 7.6 m band from the collar crossed
+  // a neighbour's twigs (12 mesh-made pairs).
+  const Skeleton larch = growSpeciesFile("european_larch", 2);
+  CHECK(checkSelfIntersections(buildTreeMesh(larch), larch).neckCrossings == 0);
+  const Skeleton cottonwood = growSpeciesFile("eastern_cottonwood", 2);
+  CHECK(checkSelfIntersections(buildTreeMesh(cottonwood), cottonwood).meshMade == 0);
+}
+
 TEST_CASE("no Arbaro species file folds at seeds 1-3, split clones a few degrees apart included", "[mesh][self-intersection][real-data]") {
   const std::vector<std::string> files = test::arbaroSpeciesFiles(ARBOR_SPECIES_DIR);
   if (files.empty()) return;  // arbaroSpeciesFiles said why

@@ -484,7 +484,7 @@ class Builder {
     const double along = start.parentReach > 0.0 ? 1.45 * start.parentReach / opt_.limitCompensation : 1e300;
     Vec3 exitDir = normal;
     double e = e0;
-    int best = 0;  // 2: clear and near, 1: clear
+    int best = 0;  // 4: clear, near and its tube clear of the parent, 3: clear and near, 2 and 1: clear
     // A clone's collar leaning along its direction can fold over a sibling's band: leaning half as far, as near,
     // comes before leaning farther out (a collar farther out moves the clone's tube and the children before it on).
     const std::array<std::pair<Vec3, double>, 6> plain{{{preferred, 1.0}, {preferred, 1.6}, {preferred, 2.5}, {normal, 1.0},
@@ -502,13 +502,22 @@ class Builder {
           bandMeetsSiblings(portCorners, q, corners)) {
         continue;
       }
-      const int score = std::abs(glm::dot(c - start.branchPoint, start.parentAxis)) <= along ? 2 : 1;
+      int score = std::abs(glm::dot(c - start.branchPoint, start.parentAxis)) <= along ? 3 : 1;
+      // Better still, a collar from which the tube clears the parent before the stem ends or splits: from the others
+      // one band ran on to the stem's end, back through the parent (the larch file's hooked twigs). Not from the
+      // farthest collars: that jutted a willow limb's neck a metre sideways.
+      if (score + 1 > best && scale < 2.0) {
+        const RingFrame frame = transportFrame(port.frame, directionOr(dir + d, dir));
+        const double sEnd = poly.length();
+        const double sClear = clearOfParent(poly, start, frame, corners, tubeStartPast(stem, poly, start, c), 0.25 * std::max(portRadius, rc));
+        if (sClear < sEnd || !bandCrossesParent(start, corners, ringCorners(poly, frame, sEnd))) ++score;
+      }
       if (score > best) {
         best = score;
         exitDir = dir;
         e = e0 * scale;
       }
-      if (best == 2) break;
+      if (best == 4) break;
     }
     const Vec3 exitCenter = center + exitDir * e;
     addPortUvw(q, port.tex);
