@@ -493,10 +493,21 @@ class Builder {
     const std::array<std::pair<Vec3, double>, 9> cloned{{{preferred, 1.0}, {halfway, 1.0}, {preferred, 1.6}, {halfway, 1.6},
                                                          {preferred, 2.5}, {halfway, 2.5}, {normal, 1.0}, {normal, 1.6}, {normal, 2.5}}};
     const std::span<const std::pair<Vec3, double>> candidates = clone ? std::span<const std::pair<Vec3, double>>(cloned) : plain;
+    const double clearStep = 0.25 * std::max(portRadius, rc);
+    struct TubeStart {
+      double unclear, clear;  // where the tube may begin, without and with its first band clear of the parent
+    };
+    // The tube's start from a collar at c, leaving along `frame` with `corners`.
+    auto tubeStart = [&](const Vec3& c, const RingFrame& frame, const std::array<Vec3, 4>& corners) {
+      const double unclear = tubeStartPast(stem, poly, start, c);
+      return TubeStart{unclear, clearOfParent(poly, start, frame, corners, unclear, clearStep)};
+    };
+    std::optional<TubeStart> chosenTube;  // the chosen collar's, where the choice worked it out
     for (const auto& [dir, scale] : candidates) {
       const Vec3 c = center + dir * (e0 * scale);
       // A child leaving straight against its port (dir = -d) leaves along the port first: backward connection.
-      const auto offsets = ringOffsets(transportFrame(port.frame, directionOr(dir + d, dir)), exitRadius * opt_.limitCompensation);
+      const RingFrame frame = transportFrame(port.frame, directionOr(dir + d, dir));
+      const auto offsets = ringOffsets(frame, exitRadius * opt_.limitCompensation);
       const std::array<Vec3, 4> corners{c + offsets[0], c + offsets[1], c + offsets[2], c + offsets[3]};
       if (bandCrossesParent(start, portCorners, corners, &q) || bandMeetsInset(portCorners, q, corners) ||
           bandMeetsSiblings(portCorners, q, corners)) {
@@ -506,16 +517,17 @@ class Builder {
       // Better still, a collar from which the tube clears the parent before the stem ends or splits: from the others
       // one band ran on to the stem's end, back through the parent (the larch file's hooked twigs). Not from the
       // farthest collars: that jutted a willow limb's neck a metre sideways.
+      std::optional<TubeStart> tube;
       if (score + 1 > best && scale < 2.0) {
-        const RingFrame frame = transportFrame(port.frame, directionOr(dir + d, dir));
+        tube = tubeStart(c, frame, corners);
         const double sEnd = poly.length();
-        const double sClear = clearOfParent(poly, start, frame, corners, tubeStartPast(stem, poly, start, c), 0.25 * std::max(portRadius, rc));
-        if (sClear < sEnd || !bandCrossesParent(start, corners, ringCorners(poly, frame, sEnd))) ++score;
+        if (tube->clear < sEnd || !bandCrossesParent(start, corners, ringCorners(poly, frame, sEnd))) ++score;
       }
       if (score > best) {
         best = score;
         exitDir = dir;
         e = e0 * scale;
+        chosenTube = tube;
       }
       if (best == 4) break;
     }
@@ -523,12 +535,12 @@ class Builder {
     addPortUvw(q, port.tex);
 
     const RingFrame exitFrame = transportFrame(port.frame, directionOr(exitDir + d, exitDir));
-    sLo = tubeStartPast(stem, poly, start, exitCenter);
     const auto offsets = ringOffsets(exitFrame, exitRadius * opt_.limitCompensation);
     const std::array<Vec3, 4> exitCorners{exitCenter + offsets[0], exitCenter + offsets[1], exitCenter + offsets[2],
                                           exitCenter + offsets[3]};
-    sUnclear = sLo;
-    sLo = clearOfParent(poly, start, exitFrame, exitCorners, sLo, 0.25 * std::max(portRadius, rc));
+    if (!chosenTube) chosenTube = tubeStart(exitCenter, exitFrame, exitCorners);
+    sUnclear = chosenTube->unclear;
+    sLo = chosenTube->clear;
     const Ring exit = emitRing(stem, exitCenter, exitFrame, exitRadius, port.tex + barkTextureAdvance(e, exitRadius));
     portBand(port, exit);
     return exit;

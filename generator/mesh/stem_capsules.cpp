@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <utility>
 
 #include <glm/geometric.hpp>
@@ -15,6 +16,23 @@ namespace {
 constexpr double kSurfaceReach = 1.6;
 // A child nearly parallel to its parent would never clear it: cap the sine (~14 degrees).
 constexpr double kMinSine = 0.25;
+
+struct LeavingAngle {
+  double sine = 0, cosine = 0;
+};
+
+// The angle between a child's first edge and its parent's direction at the attachment; none for a trunk, a clone
+// or a first edge of no length.
+std::optional<LeavingAngle> leavingAngle(const Skeleton& skeleton, int stem) {
+  const SkeletonStem& st = skeleton.stems[static_cast<std::size_t>(stem)];
+  if (st.parentStem < 0 || st.cloneOf >= 0 || st.attachNode < 0 || st.nodeCount == 0) return std::nullopt;
+  const SkeletonNode& attach = skeleton.nodes[static_cast<std::size_t>(st.attachNode)];
+  const Vec3 edge = skeleton.nodes[static_cast<std::size_t>(st.firstNode)].world.position - attach.world.position;
+  const double len = glm::length(edge);
+  if (!(len > 0.0)) return std::nullopt;
+  const Vec3 along = attach.world.direction();
+  return LeavingAngle{glm::length(glm::cross(along, edge / len)), glm::dot(along, edge / len)};
+}
 
 }  // namespace
 
@@ -161,24 +179,16 @@ double parentClearance(const Skeleton& skeleton, int stem) {
   if (st.parentStem < 0 || st.cloneOf >= 0 || st.attachNode < 0 || st.nodeCount == 0) return 0.0;
   const SkeletonNode& attach = skeleton.nodes[static_cast<std::size_t>(st.attachNode)];
   const SkeletonNode& first = skeleton.nodes[static_cast<std::size_t>(st.firstNode)];
-  const Vec3 edge = first.world.position - attach.world.position;
-  const double len = glm::length(edge);
-  const double sine = len > 0.0 ? std::max(kMinSine, glm::length(glm::cross(attach.world.direction(), edge / len))) : kMinSine;
+  const std::optional<LeavingAngle> angle = leavingAngle(skeleton, stem);
+  const double sine = angle ? std::max(kMinSine, angle->sine) : kMinSine;
   const double firstRadius = first.startRadius > 0.0 ? first.startRadius : attach.radius;  // as its first capsule's
   return kSurfaceReach * (attach.radius + firstRadius) / sine;
 }
 
 bool shallowJoint(const Skeleton& skeleton, int stem) {
-  const SkeletonStem& st = skeleton.stems[static_cast<std::size_t>(stem)];
-  if (st.parentStem < 0 || st.cloneOf >= 0 || st.attachNode < 0 || st.nodeCount == 0) return false;
-  const SkeletonNode& attach = skeleton.nodes[static_cast<std::size_t>(st.attachNode)];
-  const SkeletonNode& first = skeleton.nodes[static_cast<std::size_t>(st.firstNode)];
-  const Vec3 edge = first.world.position - attach.world.position;
-  const double len = glm::length(edge);
-  if (!(len > 0.0)) return false;
-  const Vec3 along = attach.world.direction();
-  const double cosine = glm::dot(along, edge / len), sine = glm::length(glm::cross(along, edge / len));
-  return cosine > 0.0 && 1.5 * sine < cosine;  // the axis leaves the radius R at R / tan(angle) > 1.5 R along
+  const std::optional<LeavingAngle> angle = leavingAngle(skeleton, stem);
+  return angle && angle->cosine > 0.0 && 1.5 * angle->sine < angle->cosine;  // the axis leaves the radius R at
+                                                                              // R / tan(angle) > 1.5 R along
 }
 
 }  // namespace arbor
