@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <optional>
 #include <thread>
 #include <tuple>
 
@@ -80,9 +81,8 @@ StemRelation relationOf(const Skeleton& skeleton, int a, int b) {
 
 // Both stems' skeletons reach the point, or their wood (at the size of the mesh's corners) overlaps within two
 // radii of it: then the branches themselves cross there, and so must their surfaces, necks and collars.
-bool woodMeets(const std::vector<std::vector<Capsule>>& capsules, int a, int b, const Vec3& point, double reachA, double reachB) {
-  return (reachA <= kWoodReach && reachB <= kWoodReach) ||
-         distanceToOverlap(capsules[static_cast<std::size_t>(a)], capsules[static_cast<std::size_t>(b)], point, kCageReach) <= kOverlapNear;
+bool woodMeets(const std::vector<Capsule>& a, const std::vector<Capsule>& b, const Vec3& point, double reachA, double reachB) {
+  return (reachA <= kWoodReach && reachB <= kWoodReach) || distanceToOverlap(a, b, point, kCageReach) <= kOverlapNear;
 }
 
 // The stem whose surface a stem's collar stands in for: its parent (a clone's collar is its source's end).
@@ -99,6 +99,55 @@ bool unrelatedTo(const Skeleton& skeleton, int x, int p) {
   if (sx.parentStem == p && sx.cloneOf < 0) return true;
   return relationOf(skeleton, x, p) == StemRelation::Other && collarParent(skeleton, x) != p;
 }
+
+// Sorts pairs into skeleton-made and mesh-made, building a stem's capsules the first time a pair needs them: a
+// check of a few stems' quads then costs what those stems do, not the whole tree's.
+class PairClassifier {
+ public:
+  PairClassifier(const TreeMesh& tree, const Skeleton& skeleton)
+      : tree_(tree), skeleton_(skeleton), necks_(skeleton.stems.size()), wood_(skeleton.stems.size()) {}
+
+  void classify(QuadPairHit& h) {
+    h.stemA = h.a < tree_.quadStem.size() ? tree_.quadStem[h.a] : -1;
+    h.stemB = h.b < tree_.quadStem.size() ? tree_.quadStem[h.b] : -1;
+    h.relation = relationOf(skeleton_, h.stemA, h.stemB);
+    const bool candidate = h.contact != QuadContact::Edge && h.relation != StemRelation::Hub && h.relation != StemRelation::Same;
+    if (h.relation != StemRelation::Hub) {
+      h.reachA = stemReach(capsules(h.stemA, h.stemB, h.stemA), h.point, builtRadius(tree_.mesh, h.a));
+      h.reachB = stemReach(capsules(h.stemA, h.stemB, h.stemB), h.point, builtRadius(tree_.mesh, h.b));
+    }
+    bool meets = candidate && woodMeets(capsules(h.stemA, h.stemB, h.stemA), capsules(h.stemA, h.stemB, h.stemB), h.point, h.reachA, h.reachB);
+    // A child's collar lies on its parent's surface: a stem crossing that parent's wood crosses the collar too.
+    if (candidate && !meets) {
+      for (const auto& [x, fx, y] : {std::tuple{h.stemA, h.a, h.stemB}, std::tuple{h.stemB, h.b, h.stemA}}) {
+        const int py = collarParent(skeleton_, y);
+        if (py < 0 || unrelatedTo(skeleton_, x, py) == false) continue;
+        const std::vector<Capsule>& cx = capsules(x, py, x);
+        const std::vector<Capsule>& cp = capsules(x, py, py);
+        const double reachX = stemReach(cx, h.point, builtRadius(tree_.mesh, fx));
+        const double reachP = stemReach(cp, h.point);
+        if (woodMeets(cx, cp, h.point, reachX, reachP)) meets = true;
+      }
+    }
+    h.origin = meets ? PairOrigin::Skeleton : PairOrigin::Mesh;
+  }
+
+ private:
+  // The capsules of `of` (x or y) as seen against the other: a child's neck overlaps its own parent by
+  // construction; against any other stem it is the child's wood.
+  const std::vector<Capsule>& capsules(int x, int y, int of) {
+    const StemRelation r = relationOf(skeleton_, x, y);
+    const bool neck = r == StemRelation::ParentChild || r == StemRelation::CloneSource;
+    auto& cache = neck ? necks_ : wood_;
+    auto& slot = cache[static_cast<std::size_t>(of)];
+    if (!slot) slot = stemCapsulesOf(skeleton_, of, neck ? StemStart::ClearOfParent : StemStart::OutOfParentWood);
+    return *slot;
+  }
+
+  const TreeMesh& tree_;
+  const Skeleton& skeleton_;
+  std::vector<std::optional<std::vector<Capsule>>> necks_, wood_;
+};
 
 // Per quad, whether it lies in its own stem's neck or first band: a corner on one of the stem's cross sections
 // before its first on the skeleton (an inset or a collar).
@@ -193,37 +242,8 @@ SelfIntersectionReport checkSelfIntersections(const QuadMesh& mesh) {
 SelfIntersectionReport checkSelfIntersections(const TreeMesh& tree, const Skeleton& skeleton) {
   const auto start = std::chrono::steady_clock::now();
   std::vector<QuadPairHit> hits = findIntersectingQuads(tree.mesh);
-  const std::vector<std::vector<Capsule>> necks = stemCapsules(skeleton, StemStart::ClearOfParent);
-  const std::vector<std::vector<Capsule>> wood = stemCapsules(skeleton, StemStart::OutOfParentWood);
-  // A child's neck overlaps its own parent by construction; against any other stem it is the child's wood.
-  auto capsulesFor = [&](int x, int y) -> const std::vector<std::vector<Capsule>>& {
-    const StemRelation r = relationOf(skeleton, x, y);
-    return r == StemRelation::ParentChild || r == StemRelation::CloneSource ? necks : wood;
-  };
-  for (QuadPairHit& h : hits) {
-    h.stemA = h.a < tree.quadStem.size() ? tree.quadStem[h.a] : -1;
-    h.stemB = h.b < tree.quadStem.size() ? tree.quadStem[h.b] : -1;
-    h.relation = relationOf(skeleton, h.stemA, h.stemB);
-    const bool candidate = h.contact != QuadContact::Edge && h.relation != StemRelation::Hub && h.relation != StemRelation::Same;
-    if (h.relation != StemRelation::Hub) {
-      const auto& capsules = capsulesFor(h.stemA, h.stemB);
-      h.reachA = stemReach(capsules[static_cast<std::size_t>(h.stemA)], h.point, builtRadius(tree.mesh, h.a));
-      h.reachB = stemReach(capsules[static_cast<std::size_t>(h.stemB)], h.point, builtRadius(tree.mesh, h.b));
-    }
-    bool meets = candidate && woodMeets(capsulesFor(h.stemA, h.stemB), h.stemA, h.stemB, h.point, h.reachA, h.reachB);
-    // A child's collar lies on its parent's surface: a stem crossing that parent's wood crosses the collar too.
-    if (candidate && !meets) {
-      for (const auto& [x, fx, y] : {std::tuple{h.stemA, h.a, h.stemB}, std::tuple{h.stemB, h.b, h.stemA}}) {
-        const int py = collarParent(skeleton, y);
-        if (py < 0 || unrelatedTo(skeleton, x, py) == false) continue;
-        const auto& capsules = capsulesFor(x, py);
-        const double reachX = stemReach(capsules[static_cast<std::size_t>(x)], h.point, builtRadius(tree.mesh, fx));
-        const double reachP = stemReach(capsules[static_cast<std::size_t>(py)], h.point);
-        if (woodMeets(capsules, x, py, h.point, reachX, reachP)) meets = true;
-      }
-    }
-    h.origin = meets ? PairOrigin::Skeleton : PairOrigin::Mesh;
-  }
+  PairClassifier classifier(tree, skeleton);
+  for (QuadPairHit& h : hits) classifier.classify(h);
   // Where issue 13's two joint floors meet: a shallow child's neck must leave its skeleton (docs/mesh.md).
   const std::vector<bool> neck = neckQuads(tree);
   std::vector<bool> shallow(skeleton.stems.size(), false);

@@ -143,35 +143,56 @@ double lengthInside(const std::vector<Capsule>& child, const std::vector<Capsule
 
 }  // namespace
 
+namespace {
+
+// A stem's edges as capsules, from its first node's parent (its attach node) on.
+std::vector<Capsule> edgeChain(const Skeleton& skeleton, std::size_t s) {
+  const SkeletonStem& stem = skeleton.stems[s];
+  std::vector<Capsule> chain;
+  chain.reserve(static_cast<std::size_t>(std::max(0, stem.nodeCount)));
+  for (int k = 0; k < stem.nodeCount; ++k) {
+    const SkeletonNode& n = skeleton.nodes[static_cast<std::size_t>(stem.firstNode + k)];
+    if (n.parent < 0) continue;
+    const SkeletonNode& p = skeleton.nodes[static_cast<std::size_t>(n.parent)];
+    chain.push_back(Capsule{p.world.position, n.world.position, n.startRadius > 0.0 ? n.startRadius : p.radius, n.radius});
+  }
+  return chain;
+}
+
+// Cuts a child's or clone's chain where `start` says it begins; `parentChain` gives the parent's edges on demand.
+template <class ParentChain>
+void cutChildStart(const Skeleton& skeleton, std::size_t s, StemStart start, std::vector<Capsule>& out, ParentChain&& parentChain) {
+  const SkeletonStem& stem = skeleton.stems[s];
+  const bool growsFromAnother = stem.attachNode >= 0 && (stem.parentStem >= 0 || stem.cloneOf >= 0);
+  if (!growsFromAnother || out.empty()) return;
+  const SkeletonNode& attach = skeleton.nodes[static_cast<std::size_t>(stem.attachNode)];
+  // A clone's source ends at the split: only the source's rounded end lies ahead of it, not a whole parent.
+  if (stem.cloneOf >= 0) {
+    cutStart(out, attach.radius);
+  } else if (start == StemStart::OutOfParentWood) {
+    cutStart(out, lengthInside(out, parentChain(static_cast<std::size_t>(stem.parentStem))));
+  } else {
+    cutStart(out, parentClearance(skeleton, static_cast<int>(s)));
+  }
+}
+
+}  // namespace
+
 std::vector<std::vector<Capsule>> stemCapsules(const Skeleton& skeleton, StemStart start) {
   std::vector<std::vector<Capsule>> chains(skeleton.stems.size());
-  const auto& nodes = skeleton.nodes;
-  for (std::size_t s = 0; s < skeleton.stems.size(); ++s) {
-    const SkeletonStem& stem = skeleton.stems[s];
-    for (int k = 0; k < stem.nodeCount; ++k) {
-      const SkeletonNode& n = nodes[static_cast<std::size_t>(stem.firstNode + k)];
-      if (n.parent < 0) continue;
-      const SkeletonNode& p = nodes[static_cast<std::size_t>(n.parent)];
-      chains[s].push_back(Capsule{p.world.position, n.world.position, n.startRadius > 0.0 ? n.startRadius : p.radius, n.radius});
-    }
-  }
+  for (std::size_t s = 0; s < skeleton.stems.size(); ++s) chains[s] = edgeChain(skeleton, s);
   std::vector<std::vector<Capsule>> capsules = chains;
   for (std::size_t s = 0; s < skeleton.stems.size(); ++s) {
-    const SkeletonStem& stem = skeleton.stems[s];
-    std::vector<Capsule>& out = capsules[s];
-    const bool growsFromAnother = stem.attachNode >= 0 && (stem.parentStem >= 0 || stem.cloneOf >= 0);
-    if (!growsFromAnother || out.empty()) continue;
-    const SkeletonNode& attach = nodes[static_cast<std::size_t>(stem.attachNode)];
-    // A clone's source ends at the split: only the source's rounded end lies ahead of it, not a whole parent.
-    if (stem.cloneOf >= 0) {
-      cutStart(out, attach.radius);
-    } else if (start == StemStart::OutOfParentWood) {
-      cutStart(out, lengthInside(chains[s], chains[static_cast<std::size_t>(stem.parentStem)]));
-    } else {
-      cutStart(out, parentClearance(skeleton, static_cast<int>(s)));
-    }
+    cutChildStart(skeleton, s, start, capsules[s], [&](std::size_t p) -> const std::vector<Capsule>& { return chains[p]; });
   }
   return capsules;
+}
+
+std::vector<Capsule> stemCapsulesOf(const Skeleton& skeleton, int stem, StemStart start) {
+  const auto s = static_cast<std::size_t>(stem);
+  std::vector<Capsule> out = edgeChain(skeleton, s);
+  cutChildStart(skeleton, s, start, out, [&](std::size_t p) { return edgeChain(skeleton, p); });
+  return out;
 }
 
 double parentClearance(const Skeleton& skeleton, int stem) {

@@ -33,6 +33,8 @@ bool shallowJoint(const Skeleton& skeleton, int stem);
 
 // Per stem, its edges as capsules, a child's or clone's starting as `start` says.
 std::vector<std::vector<Capsule>> stemCapsules(const Skeleton& skeleton, StemStart start = StemStart::ClearOfParent);
+// The same for one stem (what a check of a few stems' quads needs, without the whole tree's).
+std::vector<Capsule> stemCapsulesOf(const Skeleton& skeleton, int stem, StemStart start = StemStart::ClearOfParent);
 
 // Distance from x to the capsule's axis over its radius there (at least minRadius: the mesh keeps tips
 // thicker than the skeleton's, which tapers to 0): <= 1 inside; infinite before a flat start.
