@@ -5,9 +5,12 @@
 #include <cstdio>
 
 #include <random>
+#include <set>
 
 #include "growth/weber_penn/weber_penn.hpp"
+#include "mesh/crossing_twigs.hpp"
 #include "mesh/edge_plane.hpp"
+#include "mesh/mesh_checks.hpp"
 #include "mesh/quad_contact.hpp"
 #include "mesh/self_intersection.hpp"
 #include "mesh/stem_capsules.hpp"
@@ -471,6 +474,80 @@ TEST_CASE("a mesh-made pair in the neck of a child leaving at under 34 degrees i
   CHECK(check(tilted(20.0), {}) == 0);                    // no cross section says where the neck is
   CHECK(check(tilted(20.0), {onSkeleton, collar}) == 0);  // an off-skeleton ring past the first on it: a tip
   CHECK(check(tilted(40.0), {collar}) == 0);              // a steep child's neck
+}
+
+TEST_CASE("a twig whose neck crosses another stem where the skeletons do not is a fake branch, its port closed", "[mesh][self-intersection]") {
+  GrowthOptions o;
+  o.seed = 1;
+  const Skeleton skeleton = generateSkeleton(loadSpeciesFile(std::string(ARBOR_SPECIES_DIR) + "/quaking_aspen.xml"), o);
+  MeshOptions keep;
+  keep.fakeCrossingTwigs = false;
+  const TreeMesh before = buildTreeMesh(skeleton, keep);
+  const TreeMesh after = buildTreeMesh(skeleton);
+  // 25 mesh-made pairs when written, all at twigs' necks.
+  REQUIRE(checkSelfIntersections(before, skeleton).meshMade > 0);
+  CHECK(checkSelfIntersections(after, skeleton).meshMade == 0);
+
+  const std::set<int> was(before.fakedStems.begin(), before.fakedStems.end());
+  std::set<int> taken;
+  for (int s : after.fakedStems) {
+    if (!was.contains(s)) taken.insert(s);
+  }
+  REQUIRE_FALSE(taken.empty());
+  std::size_t twigQuads = 0;
+  for (int s : before.quadStem) twigQuads += taken.contains(s) ? 1 : 0;
+  std::set<int> parents;
+  for (int s : taken) {
+    const SkeletonStem& st = skeleton.stems[static_cast<std::size_t>(s)];
+    CHECK(st.level >= 2);
+    CHECK(st.cloneOf < 0);
+    parents.insert(st.parentStem);
+    // A twig: no child or clone of it has quads.
+    for (std::size_t c = 0; c < skeleton.stems.size(); ++c) {
+      if (skeleton.stems[c].parentStem == s || skeleton.stems[c].cloneOf == s) {
+        CHECK(std::find(before.quadStem.begin(), before.quadStem.end(), static_cast<int>(c)) == before.quadStem.end());
+      }
+    }
+  }
+  for (int s : after.quadStem) CHECK_FALSE(taken.contains(s));
+  // Each twig's quads gone, one face closing its port.
+  CHECK(after.mesh.quads.size() == before.mesh.quads.size() - twigQuads + taken.size());
+
+  // Nothing moved: every vertex left is one the mesh had, and every face but the ports is one it had.
+  using Point = std::array<float, 3>;
+  auto point = [](const glm::vec3& p) { return Point{p.x, p.y, p.z}; };
+  auto faceOf = [&](const QuadMesh& m, const std::array<std::uint32_t, 4>& q) {
+    std::array<Point, 4> f;
+    for (std::size_t k = 0; k < 4; ++k) f[k] = point(m.positions[q[k]]);
+    std::sort(f.begin(), f.end());
+    return f;
+  };
+  std::set<Point> points;
+  for (const glm::vec3& p : before.mesh.positions) points.insert(point(p));
+  for (const glm::vec3& p : after.mesh.positions) CHECK(points.contains(point(p)));
+  std::set<std::array<Point, 4>> faces;
+  for (const auto& q : before.mesh.quads) faces.insert(faceOf(before.mesh, q));
+  std::size_t ports = 0;
+  for (std::size_t f = 0; f < after.mesh.quads.size(); ++f) {
+    if (faces.contains(faceOf(after.mesh, after.mesh.quads[f]))) continue;
+    ++ports;
+    CHECK(parents.contains(after.quadStem[f]));  // a port face is its parent's surface again
+  }
+  CHECK(ports == taken.size());
+
+  const MeshTopologyReport topology = checkTopology(after.mesh);
+  CHECK(topology.boundaryEdges == 0);
+  CHECK(topology.nonManifoldEdges == 0);
+  CHECK(topology.misorientedEdges == 0);
+  CHECK(topology.nonManifoldVertices == 0);
+  CHECK(topology.degenerateFaces == 0);
+  CHECK(topology.components == 1);
+  CHECK(topology.eulerCharacteristic == 2);
+  CHECK(after.mesh.normals.size() == after.mesh.positions.size());
+  CHECK(after.mesh.uvw.size() == after.mesh.positions.size());
+  // Nothing is left to take out.
+  TreeMesh again = after;
+  CHECK(fakeCrossingTwigs(again, skeleton) == 0);
 }
 
 TEST_CASE("where two stems' wood overlaps: near the crossing of their capsules, never for stems apart", "[mesh][self-intersection]") {

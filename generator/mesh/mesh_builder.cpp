@@ -16,6 +16,7 @@
 #include "common/input_error.hpp"
 #include "common/text_util.hpp"
 #include "connection.hpp"
+#include "crossing_twigs.hpp"
 #include "cross_section.hpp"
 #include "edge_plane.hpp"
 #include "face_grid.hpp"
@@ -1996,7 +1997,11 @@ TreeMesh buildTreeMesh(const Skeleton& skeleton, const MeshOptions& options) {
   std::vector<int> fake, far;
   for (int pass = 0;; ++pass) {
     TreeMesh out = buildOnce(skeleton, options, fake, pass < kFarTwigPasses ? &far : nullptr);
-    if (pass == kFarTwigPasses || far.empty()) return out;
+    if (pass == kFarTwigPasses || far.empty()) {
+      // Last, the twigs whose quads still cross another stem's where the skeletons do not meet.
+      if (options.fakeDisplaced && options.fakeCrossingTwigs) fakeCrossingTwigs(out, skeleton);
+      return out;
+    }
     std::vector<int> more;
     std::set_union(fake.begin(), fake.end(), far.begin(), far.end(), std::back_inserter(more));
     fake = std::move(more);

@@ -23,6 +23,8 @@ constexpr double kCageReach = 1.52;
 constexpr double kOverlapNear = 2.0;
 // Fewer quads than this are checked on one thread: starting threads would cost more than it saves.
 constexpr std::size_t kThreadsFrom = 20000;
+// A few bands of one stem (4 quads a band) make one box of meshMadePairsOf's hierarchy.
+constexpr std::uint32_t kRunQuads = 16;
 
 QuadCorners cornersOf(const QuadMesh& mesh, std::uint32_t f) {
   QuadCorners c;
@@ -255,6 +257,55 @@ SelfIntersectionReport checkSelfIntersections(const TreeMesh& tree, const Skelet
   SelfIntersectionReport r = summarise(std::move(hits), tree.mesh.quads.size(), true);
   r.milliseconds = millisecondsSince(start);
   return r;
+}
+
+std::vector<QuadPairHit> meshMadePairsOf(const TreeMesh& tree, const Skeleton& skeleton, const std::vector<bool>& stems) {
+  const QuadMesh& mesh = tree.mesh;
+  const auto n = static_cast<std::uint32_t>(std::min(mesh.quads.size(), tree.quadStem.size()));
+  auto marked = [&](int stem) { return stem >= 0 && static_cast<std::size_t>(stem) < stems.size() && stems[static_cast<std::size_t>(stem)]; };
+  // Runs of one stem's consecutive quads: a BVH over them is a tenth the size of one over the quads, and pairs
+  // within a stem (most overlapping boxes: neighbours) are skipped whole.
+  struct Run {
+    std::uint32_t begin = 0, end = 0;
+    int stem = -1;
+    bool neck = false;  // holds a quad of its stem's neck or first band
+  };
+  const std::vector<bool> neck = neckQuads(tree);
+  std::vector<QuadBox> quadBoxes(n);
+  std::vector<Run> runs;
+  std::vector<QuadBox> runBoxes;
+  for (std::uint32_t f = 0; f < n; ++f) {
+    quadBoxes[f] = boxOf(mesh, f);
+    const int stem = tree.quadStem[f];
+    if (runs.empty() || runs.back().stem != stem || runs.back().end - runs.back().begin == kRunQuads) {
+      runs.push_back(Run{f, f, stem});
+      runBoxes.push_back(quadBoxes[f]);
+    }
+    runs.back().neck = runs.back().neck || neck[f];
+    runs.back().end = f + 1;
+    runBoxes.back().lo = glm::min(runBoxes.back().lo, quadBoxes[f].lo);
+    runBoxes.back().hi = glm::max(runBoxes.back().hi, quadBoxes[f].hi);
+  }
+  std::vector<QuadPairHit> hits;
+  if (runs.empty()) return hits;
+  const QuadBvh bvh = buildQuadBvh(runBoxes);
+  forEachOverlappingPair(bvh, NodePair{0, 0}, [&](std::uint32_t i, std::uint32_t j) {
+    const Run& x = runs[i];
+    const Run& y = runs[j];
+    if (x.stem == y.stem || x.stem < 0 || y.stem < 0 || !(marked(x.stem) || marked(y.stem)) || !(x.neck || y.neck)) return;
+    for (std::uint32_t a = x.begin; a < x.end; ++a) {
+      for (std::uint32_t b = y.begin; b < y.end; ++b) {
+        if ((neck[a] || neck[b]) && quadBoxes[a].overlaps(quadBoxes[b]) && quadContact(mesh.quads[a], mesh.quads[b]) == QuadContact::Apart) {
+          testPair(mesh, std::min(a, b), std::max(a, b), hits);
+        }
+      }
+    }
+  });
+  PairClassifier classifier(tree, skeleton);
+  for (QuadPairHit& h : hits) classifier.classify(h);
+  std::erase_if(hits, [](const QuadPairHit& h) { return h.origin != PairOrigin::Mesh; });
+  sortHits(hits);
+  return hits;
 }
 
 std::size_t meshMadeIntersections(const TreeMesh& tree, const Skeleton& skeleton) {

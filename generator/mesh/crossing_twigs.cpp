@@ -1,0 +1,212 @@
+#include "crossing_twigs.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "mesh_attributes.hpp"
+#include "self_intersection.hpp"
+
+namespace arbor {
+
+namespace {
+
+// A twig taken out can leave its parent a twig whose own quads cross: a few passes (the Arbaro files at seeds
+// 1-3 need two).
+constexpr int kPasses = 3;
+// Level-1 stems (a palm's fronds, a grass's blades) are the plant's shape: never taken out.
+constexpr int kFromLevel = 2;
+
+using Quad = std::array<std::uint32_t, 4>;
+
+// Per stem, the stem its clones split from (itself when not a clone): a twig and its clones go together.
+std::vector<int> familyRoots(const Skeleton& skeleton) {
+  std::vector<int> root(skeleton.stems.size());
+  for (std::size_t i = 0; i < root.size(); ++i) {
+    int r = static_cast<int>(i);
+    while (skeleton.stems[static_cast<std::size_t>(r)].cloneOf >= 0) r = skeleton.stems[static_cast<std::size_t>(r)].cloneOf;
+    root[i] = r;
+  }
+  return root;
+}
+
+// Per stem, whether it belongs to a twig this pass may take out: a family (a stem with the clones it splits
+// into) with quads, from level 2 on, none of whose members bears a meshed child.
+std::vector<bool> twigsOf(const TreeMesh& tree, const Skeleton& skeleton, const std::vector<int>& root) {
+  const std::size_t n = skeleton.stems.size();
+  std::vector<bool> meshed(n, false), bearing(n, false), twig(n, false);
+  for (int s : tree.quadStem) {
+    if (s >= 0 && static_cast<std::size_t>(s) < n) meshed[static_cast<std::size_t>(root[static_cast<std::size_t>(s)])] = true;
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    const SkeletonStem& st = skeleton.stems[i];
+    if (st.cloneOf < 0 && st.parentStem >= 0 && meshed[static_cast<std::size_t>(root[i])]) {
+      bearing[static_cast<std::size_t>(root[static_cast<std::size_t>(st.parentStem)])] = true;
+    }
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    const SkeletonStem& r = skeleton.stems[static_cast<std::size_t>(root[i])];
+    const auto ri = static_cast<std::size_t>(root[i]);
+    twig[i] = meshed[ri] && !bearing[ri] && r.parentStem >= 0 && r.level >= kFromLevel;
+  }
+  return twig;
+}
+
+// The twig (a family's root) a mesh-made pair takes out: of two, the one whose quad strays farther from its
+// skeleton.
+int culprit(const QuadPairHit& h, const std::vector<bool>& twig, const std::vector<int>& root) {
+  const bool a = h.stemA >= 0 && twig[static_cast<std::size_t>(h.stemA)];
+  const bool b = h.stemB >= 0 && twig[static_cast<std::size_t>(h.stemB)];
+  if (a && (!b || h.reachA >= h.reachB)) return root[static_cast<std::size_t>(h.stemA)];
+  return b ? root[static_cast<std::size_t>(h.stemB)] : -1;
+}
+
+// The face that closes a twig's port once its quads are gone: its quads' four edges that no other of its quads
+// shares, in order (the parent's face there, as the twig's first band ran on from it). None when the twig meets
+// the rest of the mesh otherwise, or one of its inner vertices is also another stem's.
+std::optional<Quad> portFace(const QuadMesh& mesh, const std::vector<std::uint32_t>& quads, const std::vector<std::uint32_t>& uses) {
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> edges;
+  for (std::uint32_t f : quads) {
+    for (std::size_t k = 0; k < 4; ++k) edges.emplace_back(mesh.quads[f][k], mesh.quads[f][(k + 1) % 4]);
+  }
+  std::sort(edges.begin(), edges.end());
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> open;
+  for (const auto& [a, b] : edges) {
+    if (!std::binary_search(edges.begin(), edges.end(), std::pair{b, a})) open.emplace_back(a, b);
+  }
+  if (open.size() != 4) return std::nullopt;
+  Quad face{open[0].first, open[0].second, 0, 0};
+  for (std::size_t k = 2; k < 4; ++k) {
+    const auto next = std::find_if(open.begin(), open.end(), [&](const auto& e) { return e.first == face[k - 1]; });
+    if (next == open.end()) return std::nullopt;
+    face[k] = next->second;
+  }
+  const auto last = std::find_if(open.begin(), open.end(), [&](const auto& e) { return e.first == face[3]; });
+  if (last == open.end() || last->second != face[0]) return std::nullopt;
+  // Every other vertex of the twig must be the twig's alone, or taking its quads out would open another hole.
+  std::vector<std::uint32_t> own;
+  for (std::uint32_t f : quads) own.insert(own.end(), mesh.quads[f].begin(), mesh.quads[f].end());
+  std::sort(own.begin(), own.end());
+  for (auto v = own.begin(); v != own.end();) {
+    const auto end = std::upper_bound(v, own.end(), *v);
+    const bool onPort = std::find(face.begin(), face.end(), *v) != face.end();
+    if (!onPort && uses[*v] != static_cast<std::uint32_t>(end - v)) return std::nullopt;
+    v = end;
+  }
+  return face;
+}
+
+template <class T>
+void keepVertices(std::vector<T>& values, const std::vector<std::uint32_t>& newIndex, std::uint32_t kept) {
+  if (values.size() != newIndex.size()) return;
+  std::vector<T> out(kept);
+  for (std::size_t v = 0; v < values.size(); ++v) {
+    if (newIndex[v] != UINT32_MAX) out[newIndex[v]] = values[v];
+  }
+  values = std::move(out);
+}
+
+// Takes the listed twigs' quads out, closes each port, drops the vertices no quad uses any more; returns the
+// twigs taken out (those with a port to close).
+std::vector<int> takeOut(TreeMesh& tree, const Skeleton& skeleton, const std::vector<int>& root, const std::vector<int>& twigs) {
+  QuadMesh& mesh = tree.mesh;
+  std::vector<std::uint32_t> uses(mesh.vertexCount(), 0);
+  for (const Quad& q : mesh.quads) {
+    for (std::uint32_t v : q) ++uses[v];
+  }
+  // The family (root) a quad belongs to, if it is one of the twigs.
+  auto twigOf = [&](std::uint32_t f) -> std::optional<std::size_t> {
+    const int s = tree.quadStem[f];
+    if (s < 0) return std::nullopt;
+    const auto it = std::lower_bound(twigs.begin(), twigs.end(), root[static_cast<std::size_t>(s)]);
+    if (it == twigs.end() || *it != root[static_cast<std::size_t>(s)]) return std::nullopt;
+    return static_cast<std::size_t>(it - twigs.begin());
+  };
+  std::vector<std::vector<std::uint32_t>> quadsOf(twigs.size());
+  for (std::uint32_t f = 0; f < tree.quadStem.size(); ++f) {
+    if (const auto t = twigOf(f)) quadsOf[*t].push_back(f);
+  }
+  std::vector<int> out;
+  std::vector<std::optional<Quad>> ports(twigs.size());
+  for (std::size_t t = 0; t < twigs.size(); ++t) {
+    ports[t] = portFace(mesh, quadsOf[t], uses);
+    if (ports[t]) out.push_back(twigs[t]);
+  }
+  if (out.empty()) return out;
+  // The port's face takes the place of the twig's first quad; the twig's other quads go.
+  std::vector<Quad> quads;
+  std::vector<int> quadStem;
+  quads.reserve(mesh.quads.size());
+  quadStem.reserve(mesh.quads.size());
+  std::vector<int> members;  // every stem with quads of the families taken out
+  for (std::uint32_t f = 0; f < mesh.quads.size(); ++f) {
+    const auto t = twigOf(f);
+    if (!t || !ports[*t]) {
+      quads.push_back(mesh.quads[f]);
+      quadStem.push_back(tree.quadStem[f]);
+      continue;
+    }
+    members.push_back(tree.quadStem[f]);
+    if (quadsOf[*t].front() == f) {
+      quads.push_back(*ports[*t]);
+      quadStem.push_back(skeleton.stems[static_cast<std::size_t>(twigs[*t])].parentStem);
+    }
+  }
+  std::sort(members.begin(), members.end());
+  members.erase(std::unique(members.begin(), members.end()), members.end());
+  std::vector<std::uint32_t> newIndex(mesh.vertexCount(), UINT32_MAX);
+  for (const Quad& q : quads) {
+    for (std::uint32_t v : q) newIndex[v] = 0;
+  }
+  for (std::uint32_t v : mesh.openBoundary) newIndex[v] = 0;
+  std::uint32_t kept = 0;
+  for (std::uint32_t& n : newIndex) {
+    if (n == 0) n = kept++;
+  }
+  for (Quad& q : quads) {
+    for (std::uint32_t& v : q) v = newIndex[v];
+  }
+  for (std::uint32_t& v : mesh.openBoundary) v = newIndex[v];
+  keepVertices(mesh.positions, newIndex, kept);
+  keepVertices(mesh.tangents, newIndex, kept);
+  keepVertices(mesh.uvw, newIndex, kept);
+  keepVertices(mesh.radius, newIndex, kept);
+  keepVertices(mesh.level, newIndex, kept);
+  mesh.normals.clear();
+  mesh.quads = std::move(quads);
+  tree.quadStem = std::move(quadStem);
+  auto gone = [&](int stem) { return std::binary_search(members.begin(), members.end(), stem); };
+  std::erase_if(tree.rings, [&](const MeshRing& r) { return gone(r.stem); });
+  for (MeshRing& r : tree.rings) {
+    for (std::uint32_t& v : r.vertices) v = newIndex[v];
+  }
+  for (MeshJoint& j : tree.joints) std::erase_if(j.childStems, gone);
+  tree.fakedStems.insert(tree.fakedStems.end(), members.begin(), members.end());
+  computeNormals(mesh);
+  return out;
+}
+
+}  // namespace
+
+std::size_t fakeCrossingTwigs(TreeMesh& tree, const Skeleton& skeleton) {
+  std::size_t taken = 0;
+  const std::vector<int> root = familyRoots(skeleton);
+  for (int pass = 0; pass < kPasses; ++pass) {
+    const std::vector<bool> twig = twigsOf(tree, skeleton, root);
+    std::vector<int> culprits;
+    for (const QuadPairHit& h : meshMadePairsOf(tree, skeleton, twig)) {
+      if (const int c = culprit(h, twig, root); c >= 0) culprits.push_back(c);
+    }
+    std::sort(culprits.begin(), culprits.end());
+    culprits.erase(std::unique(culprits.begin(), culprits.end()), culprits.end());
+    if (culprits.empty()) break;
+    const std::size_t out = takeOut(tree, skeleton, root, culprits).size();
+    if (out == 0) break;
+    taken += out;
+  }
+  return taken;
+}
+
+}  // namespace arbor

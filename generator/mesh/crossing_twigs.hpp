@@ -1,0 +1,19 @@
+#pragma once
+// Twigs whose quads cross another stem's where the two skeletons do not meet (mesh-made pairs, which issue 13
+// wants gone) are taken out of the built mesh and drawn as fake branches; each one's port in its parent is
+// closed again by the face the twig replaced.
+#include <cstddef>
+
+#include "growth/skeleton.hpp"
+#include "tree_mesh.hpp"
+
+namespace arbor {
+
+// A twig here: a meshed stem two or more levels from its trunk, with the clones it splits into, none of which bears
+// a meshed child (a palm's fronds and a grass's blades, level 1, are the plant's shape and stay). Takes out, in up
+// to three passes, the twig of each mesh-made pair with a quad in either stem's neck or first band (of two twigs,
+// the one whose quad lies farther off its skeleton), adds its stems to tree.fakedStems and returns how many twigs
+// were taken out. A twig whose quads do not meet the rest of the mesh in exactly one four-sided port stays.
+std::size_t fakeCrossingTwigs(TreeMesh& tree, const Skeleton& skeleton);
+
+}  // namespace arbor
