@@ -13,9 +13,9 @@ namespace arbor {
 
 namespace {
 
-// A twig taken out can leave its parent a twig whose own quads cross: a few passes (the Arbaro files at seeds
-// 1-3 need two).
-constexpr int kPasses = 3;
+// A twig taken out can leave its parent a twig whose own quads cross: a second pass (a third found nothing on
+// any tree at seeds 1-3).
+constexpr int kPasses = 2;
 // Level-1 stems (a palm's fronds, a grass's blades) are the plant's shape: never taken out.
 constexpr int kFromLevel = 2;
 // A branch bearing only twigs goes with them (all trees at seeds 1-3: 562 -> 502 pairs, 0.24 % of the quads);
@@ -38,7 +38,7 @@ std::vector<int> familyRoots(const Skeleton& skeleton) {
 // Per stem, whether it belongs to a twig this pass may take out: a family (a stem with the clones it splits
 // into) with quads, from level 2 on, whose meshed descendants lie at most kMaxHeight families below it (a branch
 // bearing only twigs: they go with it).
-std::vector<bool> twigsOf(const TreeMesh& tree, const Skeleton& skeleton, const std::vector<int>& root) {
+std::vector<bool> twigsOf(const TreeMesh& tree, const Skeleton& skeleton, const std::vector<int>& root, int maxHeight = kMaxHeight) {
   const std::size_t n = skeleton.stems.size();
   std::vector<bool> meshed(n, false), twig(n, false);
   std::vector<int> height(n, 0);
@@ -60,7 +60,7 @@ std::vector<bool> twigsOf(const TreeMesh& tree, const Skeleton& skeleton, const 
   for (std::size_t i = 0; i < n; ++i) {
     const SkeletonStem& r = skeleton.stems[static_cast<std::size_t>(root[i])];
     const auto ri = static_cast<std::size_t>(root[i]);
-    twig[i] = meshed[ri] && height[ri] <= kMaxHeight && r.parentStem >= 0 && r.level >= kFromLevel;
+    twig[i] = meshed[ri] && height[ri] <= maxHeight && r.parentStem >= 0 && r.level >= kFromLevel;
   }
   return twig;
 }
@@ -109,19 +109,24 @@ std::optional<Quad> portFace(const QuadMesh& mesh, const std::vector<std::uint32
   return face;
 }
 
+// Moves each kept vertex's value to its new index (never above its old one), in place.
 template <class T>
 void keepVertices(std::vector<T>& values, const std::vector<std::uint32_t>& newIndex, std::uint32_t kept) {
   if (values.size() != newIndex.size()) return;
-  std::vector<T> out(kept);
   for (std::size_t v = 0; v < values.size(); ++v) {
-    if (newIndex[v] != UINT32_MAX) out[newIndex[v]] = values[v];
+    if (newIndex[v] != UINT32_MAX) values[newIndex[v]] = values[v];
   }
-  values = std::move(out);
+  values.resize(kept);
 }
+
+struct TakenOut {
+  std::vector<int> twigs;    // the families' roots
+  std::vector<int> members;  // every stem of theirs that had quads, sorted
+};
 
 // Takes the listed twigs' quads out, closes each port, drops the vertices no quad uses any more; returns the
 // twigs taken out (those with a port to close).
-std::vector<int> takeOut(TreeMesh& tree, const Skeleton& skeleton, const std::vector<int>& root, const std::vector<int>& twigs) {
+TakenOut takeOut(TreeMesh& tree, const Skeleton& skeleton, const std::vector<int>& root, const std::vector<int>& twigs) {
   QuadMesh& mesh = tree.mesh;
   std::vector<std::uint32_t> uses(mesh.vertexCount(), 0);
   for (const Quad& q : mesh.quads) {
@@ -151,19 +156,19 @@ std::vector<int> takeOut(TreeMesh& tree, const Skeleton& skeleton, const std::ve
   for (std::uint32_t f = 0; f < tree.quadStem.size(); ++f) {
     if (const auto t = twigOf(f)) quadsOf[*t].push_back(f);
   }
-  std::vector<int> out;
+  TakenOut out;
   std::vector<std::optional<Quad>> ports(twigs.size());
   for (std::size_t t = 0; t < twigs.size(); ++t) {
     ports[t] = portFace(mesh, quadsOf[t], uses);
-    if (ports[t]) out.push_back(twigs[t]);
+    if (ports[t]) out.twigs.push_back(twigs[t]);
   }
-  if (out.empty()) return out;
+  if (out.twigs.empty()) return out;
   // The port's face takes the place of the twig's first quad; the twig's other quads go.
   std::vector<Quad> quads;
   std::vector<int> quadStem;
   quads.reserve(mesh.quads.size());
   quadStem.reserve(mesh.quads.size());
-  std::vector<int> members;  // every stem with quads of the families taken out
+  std::vector<int>& members = out.members;
   for (std::uint32_t f = 0; f < mesh.quads.size(); ++f) {
     const auto t = twigOf(f);
     if (!t || !ports[*t]) {
@@ -197,7 +202,6 @@ std::vector<int> takeOut(TreeMesh& tree, const Skeleton& skeleton, const std::ve
   keepVertices(mesh.uvw, newIndex, kept);
   keepVertices(mesh.radius, newIndex, kept);
   keepVertices(mesh.level, newIndex, kept);
-  mesh.normals.clear();
   mesh.quads = std::move(quads);
   tree.quadStem = std::move(quadStem);
   auto gone = [&](int stem) { return std::binary_search(members.begin(), members.end(), stem); };
@@ -207,28 +211,34 @@ std::vector<int> takeOut(TreeMesh& tree, const Skeleton& skeleton, const std::ve
   }
   for (MeshJoint& j : tree.joints) std::erase_if(j.childStems, gone);
   tree.fakedStems.insert(tree.fakedStems.end(), members.begin(), members.end());
-  computeNormals(mesh);
   return out;
 }
 
 }  // namespace
 
 std::size_t fakeCrossingTwigs(TreeMesh& tree, const Skeleton& skeleton) {
-  std::size_t taken = 0;
   const std::vector<int> root = familyRoots(skeleton);
-  for (int pass = 0; pass < kPasses; ++pass) {
+  // One search, for every stem that is a twig or becomes one once its twigs are taken out: the second pass only
+  // looks again at the pairs found.
+  const std::vector<bool> deep = twigsOf(tree, skeleton, root, kMaxHeight + 1);
+  std::vector<QuadPairHit> hits = meshMadePairsOf(tree, skeleton, deep);
+  std::size_t taken = 0;
+  for (int pass = 0; pass < kPasses && !hits.empty(); ++pass) {
     const std::vector<bool> twig = twigsOf(tree, skeleton, root);
     std::vector<int> culprits;
-    for (const QuadPairHit& h : meshMadePairsOf(tree, skeleton, twig)) {
+    for (const QuadPairHit& h : hits) {
       if (const int c = culprit(h, twig, root); c >= 0) culprits.push_back(c);
     }
     std::sort(culprits.begin(), culprits.end());
     culprits.erase(std::unique(culprits.begin(), culprits.end()), culprits.end());
     if (culprits.empty()) break;
-    const std::size_t out = takeOut(tree, skeleton, root, culprits).size();
-    if (out == 0) break;
-    taken += out;
+    const TakenOut out = takeOut(tree, skeleton, root, culprits);
+    if (out.twigs.empty()) break;
+    taken += out.twigs.size();
+    auto gone = [&](int stem) { return std::binary_search(out.members.begin(), out.members.end(), stem); };
+    std::erase_if(hits, [&](const QuadPairHit& h) { return gone(h.stemA) || gone(h.stemB); });
   }
+  if (taken > 0) computeNormals(tree.mesh);
   return taken;
 }
 

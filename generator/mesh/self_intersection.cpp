@@ -193,21 +193,20 @@ double millisecondsSince(std::chrono::steady_clock::time_point start) {
 
 }  // namespace
 
-std::vector<QuadPairHit> findIntersectingQuads(const QuadMesh& mesh) {
-  const auto n = static_cast<std::uint32_t>(mesh.quads.size());
-  std::vector<QuadBox> boxes(n);
-  for (std::uint32_t f = 0; f < n; ++f) boxes[f] = boxOf(mesh, f);
-  const QuadBvh bvh = buildQuadBvh(boxes);
-  const unsigned threads = n < kThreadsFrom ? 1u : std::clamp(std::thread::hardware_concurrency(), 1u, 16u);
+namespace {
+
+// visit(i, j, hits) for every two items of the BVH whose boxes overlap, on up to every core once there are
+// `threadsFrom` items; the hits of all threads together, sorted.
+template <class Visit>
+std::vector<QuadPairHit> overlappingPairs(const QuadBvh& bvh, std::size_t threadsFrom, Visit&& visit) {
+  const unsigned threads = bvh.items.size() < threadsFrom ? 1u : std::clamp(std::thread::hardware_concurrency(), 1u, 16u);
   // Many more tasks than threads, taken in turn: subtrees differ widely in work.
   const std::vector<NodePair> tasks = splitOverlapTasks(bvh, threads == 1 ? 1 : 64 * threads);
   std::atomic<std::size_t> next{0};
   std::vector<std::vector<QuadPairHit>> found(threads);
   auto work = [&](unsigned t) {
     for (std::size_t k = next++; k < tasks.size(); k = next++) {
-      forEachOverlappingPair(bvh, tasks[k], [&](std::uint32_t a, std::uint32_t b) {
-        testPair(mesh, std::min(a, b), std::max(a, b), found[t]);
-      });
+      forEachOverlappingPair(bvh, tasks[k], [&](std::uint32_t i, std::uint32_t j) { visit(i, j, found[t]); });
     }
   };
   if (threads == 1) {
@@ -221,6 +220,17 @@ std::vector<QuadPairHit> findIntersectingQuads(const QuadMesh& mesh) {
   for (auto& f : found) hits.insert(hits.end(), f.begin(), f.end());
   sortHits(hits);
   return hits;
+}
+
+}  // namespace
+
+std::vector<QuadPairHit> findIntersectingQuads(const QuadMesh& mesh) {
+  const auto n = static_cast<std::uint32_t>(mesh.quads.size());
+  std::vector<QuadBox> boxes(n);
+  for (std::uint32_t f = 0; f < n; ++f) boxes[f] = boxOf(mesh, f);
+  return overlappingPairs(buildQuadBvh(boxes), kThreadsFrom, [&](std::uint32_t a, std::uint32_t b, std::vector<QuadPairHit>& hits) {
+    testPair(mesh, std::min(a, b), std::max(a, b), hits);
+  });
 }
 
 std::vector<QuadPairHit> findIntersectingQuadsBruteForce(const QuadMesh& mesh) {
@@ -263,12 +273,13 @@ std::vector<QuadPairHit> meshMadePairsOf(const TreeMesh& tree, const Skeleton& s
   const QuadMesh& mesh = tree.mesh;
   const auto n = static_cast<std::uint32_t>(std::min(mesh.quads.size(), tree.quadStem.size()));
   auto marked = [&](int stem) { return stem >= 0 && static_cast<std::size_t>(stem) < stems.size() && stems[static_cast<std::size_t>(stem)]; };
-  // Runs of one stem's consecutive quads: a BVH over them is a tenth the size of one over the quads, and pairs
-  // within a stem (most overlapping boxes: neighbours) are skipped whole.
+  // Runs of one stem's consecutive quads, all in its neck (and first band) or none: a BVH over them is a tenth the
+  // size of one over the quads, and pairs within a stem (most overlapping boxes: neighbours) or away from any neck
+  // are skipped whole.
   struct Run {
     std::uint32_t begin = 0, end = 0;
     int stem = -1;
-    bool neck = false;  // holds a quad of its stem's neck or first band
+    bool neck = false;
   };
   const std::vector<bool> neck = neckQuads(tree);
   std::vector<QuadBox> quadBoxes(n);
@@ -277,26 +288,26 @@ std::vector<QuadPairHit> meshMadePairsOf(const TreeMesh& tree, const Skeleton& s
   for (std::uint32_t f = 0; f < n; ++f) {
     quadBoxes[f] = boxOf(mesh, f);
     const int stem = tree.quadStem[f];
-    if (runs.empty() || runs.back().stem != stem || runs.back().end - runs.back().begin == kRunQuads) {
-      runs.push_back(Run{f, f, stem});
+    if (runs.empty() || runs.back().stem != stem || runs.back().neck != neck[f] || runs.back().end - runs.back().begin == kRunQuads) {
+      runs.push_back(Run{f, f, stem, neck[f]});
       runBoxes.push_back(quadBoxes[f]);
     }
-    runs.back().neck = runs.back().neck || neck[f];
     runs.back().end = f + 1;
     runBoxes.back().lo = glm::min(runBoxes.back().lo, quadBoxes[f].lo);
     runBoxes.back().hi = glm::max(runBoxes.back().hi, quadBoxes[f].hi);
   }
-  std::vector<QuadPairHit> hits;
-  if (runs.empty()) return hits;
-  const QuadBvh bvh = buildQuadBvh(runBoxes);
-  forEachOverlappingPair(bvh, NodePair{0, 0}, [&](std::uint32_t i, std::uint32_t j) {
+  if (runs.empty()) return {};
+  std::vector<QuadPairHit> hits = overlappingPairs(buildQuadBvh(runBoxes), kThreadsFrom / kRunQuads,
+                                                   [&](std::uint32_t i, std::uint32_t j, std::vector<QuadPairHit>& found) {
     const Run& x = runs[i];
     const Run& y = runs[j];
     if (x.stem == y.stem || x.stem < 0 || y.stem < 0 || !(marked(x.stem) || marked(y.stem)) || !(x.neck || y.neck)) return;
+    const StemRelation relation = relationOf(skeleton, x.stem, y.stem);
+    if (relation == StemRelation::CloneSource) return;
     for (std::uint32_t a = x.begin; a < x.end; ++a) {
       for (std::uint32_t b = y.begin; b < y.end; ++b) {
-        if ((neck[a] || neck[b]) && quadBoxes[a].overlaps(quadBoxes[b]) && quadContact(mesh.quads[a], mesh.quads[b]) == QuadContact::Apart) {
-          testPair(mesh, std::min(a, b), std::max(a, b), hits);
+        if (quadBoxes[a].overlaps(quadBoxes[b]) && quadContact(mesh.quads[a], mesh.quads[b]) == QuadContact::Apart) {
+          testPair(mesh, std::min(a, b), std::max(a, b), found);
         }
       }
     }
@@ -304,7 +315,6 @@ std::vector<QuadPairHit> meshMadePairsOf(const TreeMesh& tree, const Skeleton& s
   PairClassifier classifier(tree, skeleton);
   for (QuadPairHit& h : hits) classifier.classify(h);
   std::erase_if(hits, [](const QuadPairHit& h) { return h.origin != PairOrigin::Mesh; });
-  sortHits(hits);
   return hits;
 }
 

@@ -59,9 +59,10 @@ SelfIntersectionReport checkSelfIntersections(const QuadMesh& mesh);
 SelfIntersectionReport checkSelfIntersections(const TreeMesh& tree, const Skeleton& skeleton);
 
 // The mesh-made pairs between a quad of a stem flagged in `stems` (one flag per skeleton stem) and another stem's
-// quad, classified as above, sorted. Pairs within one stem, or sharing a corner, are left out: the quads around
-// every port share corners with their neighbours, most of the work and 28 of the 935 mesh-made pairs of all trees
-// at seeds 1-3. On one thread, over a BVH of runs of each stem's quads: cheap enough to run after every build.
+// quad, where one of the two lies in its stem's neck or first band, classified as above, sorted. Left out: pairs
+// within one stem, of a clone with its source (which it leaves through its end), or sharing a corner (the quads
+// around every port: most of the work). Over a BVH of runs of each stem's quads, on every core for a large mesh:
+// cheap enough to run after every build.
 std::vector<QuadPairHit> meshMadePairsOf(const TreeMesh& tree, const Skeleton& skeleton, const std::vector<bool>& stems);
 // The number the mesher must bring to 0: pairs of quads that intersect where the skeleton does not.
 std::size_t meshMadeIntersections(const TreeMesh& tree, const Skeleton& skeleton);
