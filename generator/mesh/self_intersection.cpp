@@ -1,6 +1,7 @@
 #include "self_intersection.hpp"
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <chrono>
 #include <optional>
@@ -304,8 +305,19 @@ std::vector<QuadPairHit> meshMadePairsOf(const TreeMesh& tree, const Skeleton& s
     if (x.stem == y.stem || x.stem < 0 || y.stem < 0 || !(marked(x.stem) || marked(y.stem)) || !(x.neck || y.neck)) return;
     const StemRelation relation = relationOf(skeleton, x.stem, y.stem);
     if (relation == StemRelation::CloneSource) return;
+    // Against its parent, only a child's own neck: the parent's long neck runs along its children's tubes.
+    if (relation == StemRelation::ParentChild && !(skeleton.stems[static_cast<std::size_t>(x.stem)].parentStem == y.stem ? x.neck : y.neck)) return;
+    // Only the quads of each run that reach into the other run's box can meet.
+    std::array<std::uint32_t, kRunQuads> near{};
+    std::size_t count = 0;
+    for (std::uint32_t b = y.begin; b < y.end; ++b) {
+      if (quadBoxes[b].overlaps(runBoxes[i])) near[count++] = b;
+    }
+    if (count == 0) return;
     for (std::uint32_t a = x.begin; a < x.end; ++a) {
-      for (std::uint32_t b = y.begin; b < y.end; ++b) {
+      if (!quadBoxes[a].overlaps(runBoxes[j])) continue;
+      for (std::size_t k = 0; k < count; ++k) {
+        const std::uint32_t b = near[k];
         if (quadBoxes[a].overlaps(quadBoxes[b]) && quadContact(mesh.quads[a], mesh.quads[b]) == QuadContact::Apart) {
           testPair(mesh, std::min(a, b), std::max(a, b), found);
         }
