@@ -7,6 +7,7 @@
 #include <optional>
 #include <thread>
 #include <tuple>
+#include <unordered_map>
 
 #include "quad_bvh.hpp"
 #include "stem_capsules.hpp"
@@ -84,8 +85,8 @@ StemRelation relationOf(const Skeleton& skeleton, int a, int b) {
 
 // Both stems' skeletons reach the point, or their wood (at the size of the mesh's corners) overlaps within two
 // radii of it: then the branches themselves cross there, and so must their surfaces, necks and collars.
-bool woodMeets(const std::vector<Capsule>& a, const std::vector<Capsule>& b, const Vec3& point, double reachA, double reachB) {
-  return (reachA <= kWoodReach && reachB <= kWoodReach) || distanceToOverlap(a, b, point, kCageReach) <= kOverlapNear;
+bool woodMeets(const std::vector<WoodOverlap>& overlaps, const Vec3& point, double reachA, double reachB) {
+  return (reachA <= kWoodReach && reachB <= kWoodReach) || distanceToOverlap(overlaps, point) <= kOverlapNear;
 }
 
 // The stem whose surface a stem's collar stands in for: its parent (a clone's collar is its source's end).
@@ -119,7 +120,7 @@ class PairClassifier {
       h.reachA = stemReach(capsules(h.stemA, h.stemB, h.stemA), h.point, builtRadius(tree_.mesh, h.a));
       h.reachB = stemReach(capsules(h.stemA, h.stemB, h.stemB), h.point, builtRadius(tree_.mesh, h.b));
     }
-    bool meets = candidate && woodMeets(capsules(h.stemA, h.stemB, h.stemA), capsules(h.stemA, h.stemB, h.stemB), h.point, h.reachA, h.reachB);
+    bool meets = candidate && woodMeets(overlaps(h.stemA, h.stemB), h.point, h.reachA, h.reachB);
     // A child's collar lies on its parent's surface: a stem crossing that parent's wood crosses the collar too.
     if (candidate && !meets) {
       for (const auto& [x, fx, y] : {std::tuple{h.stemA, h.a, h.stemB}, std::tuple{h.stemB, h.b, h.stemA}}) {
@@ -129,13 +130,22 @@ class PairClassifier {
         const std::vector<Capsule>& cp = capsules(x, py, py);
         const double reachX = stemReach(cx, h.point, builtRadius(tree_.mesh, fx));
         const double reachP = stemReach(cp, h.point);
-        if (woodMeets(cx, cp, h.point, reachX, reachP)) meets = true;
+        if (woodMeets(overlaps(x, py), h.point, reachX, reachP)) meets = true;
       }
     }
     h.origin = meets ? PairOrigin::Skeleton : PairOrigin::Mesh;
   }
 
  private:
+  // Where the wood of stems x and y overlaps (their capsules as seen against each other), once per pair: a
+  // crossing of two branches makes many pairs of quads.
+  const std::vector<WoodOverlap>& overlaps(int x, int y) {
+    const auto key = (static_cast<std::uint64_t>(static_cast<std::uint32_t>(std::min(x, y))) << 32) | static_cast<std::uint32_t>(std::max(x, y));
+    const auto it = overlaps_.find(key);
+    if (it != overlaps_.end()) return it->second;
+    return overlaps_.emplace(key, woodOverlaps(capsules(x, y, x), capsules(x, y, y), kCageReach)).first->second;
+  }
+
   // The capsules of `of` (x or y) as seen against the other: a child's neck overlaps its own parent by
   // construction; against any other stem it is the child's wood.
   const std::vector<Capsule>& capsules(int x, int y, int of) {
@@ -150,6 +160,7 @@ class PairClassifier {
   const TreeMesh& tree_;
   const Skeleton& skeleton_;
   std::vector<std::optional<std::vector<Capsule>>> necks_, wood_;
+  std::unordered_map<std::uint64_t, std::vector<WoodOverlap>> overlaps_;
 };
 
 // Per quad, whether it lies in its own stem's neck or first band: a corner on one of the stem's cross sections

@@ -84,18 +84,28 @@ double segmentDistance(const Vec3& p0, const Vec3& p1, const Vec3& q0, const Vec
   return glm::distance(p0 + (p1 - p0) * s, q0 + (q1 - q0) * t);
 }
 
-double distanceToOverlap(const std::vector<Capsule>& a, const std::vector<Capsule>& b, const Vec3& x, double inflate) {
-  double best = std::numeric_limits<double>::infinity();
+std::vector<WoodOverlap> woodOverlaps(const std::vector<Capsule>& a, const std::vector<Capsule>& b, double inflate) {
+  std::vector<WoodOverlap> out;
   for (const Capsule& ca : a) {
     for (const Capsule& cb : b) {
       const auto [s, t] = closestParameters(ca.a, ca.b, cb.a, cb.b);
       const Vec3 pa = ca.a + (ca.b - ca.a) * s, pb = cb.a + (cb.b - cb.a) * t;
       const double reach = inflate * (ca.ra + (ca.rb - ca.ra) * s + cb.ra + (cb.rb - cb.ra) * t);
       if (reach <= 0.0 || glm::distance(pa, pb) >= reach) continue;
-      best = std::min(best, glm::distance(x, 0.5 * (pa + pb)) / reach);
+      out.push_back(WoodOverlap{0.5 * (pa + pb), reach});
     }
   }
+  return out;
+}
+
+double distanceToOverlap(const std::vector<WoodOverlap>& overlaps, const Vec3& x) {
+  double best = std::numeric_limits<double>::infinity();
+  for (const WoodOverlap& o : overlaps) best = std::min(best, glm::distance(x, o.middle) / o.reach);
   return best;
+}
+
+double distanceToOverlap(const std::vector<Capsule>& a, const std::vector<Capsule>& b, const Vec3& x, double inflate) {
+  return distanceToOverlap(woodOverlaps(a, b, inflate), x);
 }
 
 namespace {

@@ -50,5 +50,13 @@ double segmentDistance(const Vec3& p0, const Vec3& p1, const Vec3& q0, const Vec
 // at their axes' closest points, the smallest distance from x to the middle of those points, in units of the
 // two inflated radii there (infinite when the stems' capsules never overlap).
 double distanceToOverlap(const std::vector<Capsule>& a, const std::vector<Capsule>& b, const Vec3& x, double inflate);
+// The same in two steps, for many points against one pair of stems: where their inflated capsules overlap (the
+// middle of each overlapping pair's closest points, and the two inflated radii there), then the distance.
+struct WoodOverlap {
+  Vec3 middle{0.0};
+  double reach = 0;
+};
+std::vector<WoodOverlap> woodOverlaps(const std::vector<Capsule>& a, const std::vector<Capsule>& b, double inflate);
+double distanceToOverlap(const std::vector<WoodOverlap>& overlaps, const Vec3& x);
 
 }  // namespace arbor
