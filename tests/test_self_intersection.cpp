@@ -393,6 +393,21 @@ TEST_CASE("against stems but its parent, a child's wood starts where its axis le
   // Found on the parent's own capsules, not from a capped sine: fails with the neck's 14-degree floor at 10 degrees.
   CHECK(glm::length(wood[1][0].a) == Approx(0.1 / std::sin(radians(20.0))).epsilon(1e-3));
   CHECK(wood[1][0].flatStart);
+  // One stem's capsules alone (what the checks build as pairs need them) are the same as in the whole tree's.
+  for (int stem = 0; stem < static_cast<int>(s.stems.size()); ++stem) {
+    for (const auto& [start, all] : {std::pair{StemStart::ClearOfParent, &necks}, std::pair{StemStart::OutOfParentWood, &wood}}) {
+      const std::vector<Capsule> one = stemCapsulesOf(s, stem, start);
+      const std::vector<Capsule>& expected = (*all)[static_cast<std::size_t>(stem)];
+      REQUIRE(one.size() == expected.size());
+      for (std::size_t k = 0; k < one.size(); ++k) {
+        CHECK(one[k].a == expected[k].a);
+        CHECK(one[k].b == expected[k].b);
+        CHECK(one[k].ra == expected[k].ra);
+        CHECK(one[k].rb == expected[k].rb);
+        CHECK(one[k].flatStart == expected[k].flatStart);
+      }
+    }
+  }
 
   // Stem 2, a thin trunk of its own along y, crosses the child's axis half a metre out: between where the child's
   // axis leaves stem 0 and where its wood clears stem 0's, and itself clear of stem 0 (1.52 (0.1 + 0.005) < 0.171).

@@ -132,7 +132,6 @@ TakenOut takeOut(TreeMesh& tree, const Skeleton& skeleton, const std::vector<int
   for (const Quad& q : mesh.quads) {
     for (std::uint32_t v : q) ++uses[v];
   }
-  // The family (root) a quad belongs to, if it is one of the twigs.
   // Per stem, the outermost of the twigs taken out that it belongs to (its family, or one it grows from).
   std::vector<int> takenWith(skeleton.stems.size(), -2);
   auto ownerOf = [&](int s) {
