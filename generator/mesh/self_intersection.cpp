@@ -25,6 +25,9 @@ constexpr double kCageReach = 1.52;
 constexpr double kOverlapNear = 2.0;
 // Fewer quads than this are checked on one thread: starting threads would cost more than it saves.
 constexpr std::size_t kThreadsFrom = 20000;
+// A stem whose neck runs meet more runs of other stems than this lies in a thicket the skeleton made (a fuzzed
+// palm of 64 trunks: a median of 740, and a million crossing quads); on every preset and Arbaro file at most 34.
+constexpr std::uint32_t kCrowdedNeck = 128;
 // A few bands of one stem (4 quads a band) make one box of meshMadePairsOf's hierarchy.
 constexpr std::uint32_t kRunQuads = 16;
 
@@ -85,8 +88,10 @@ StemRelation relationOf(const Skeleton& skeleton, int a, int b) {
 
 // Both stems' skeletons reach the point, or their wood (at the size of the mesh's corners) overlaps within two
 // radii of it: then the branches themselves cross there, and so must their surfaces, necks and collars.
-bool woodMeets(const std::vector<WoodOverlap>& overlaps, const Vec3& point, double reachA, double reachB) {
-  return (reachA <= kWoodReach && reachB <= kWoodReach) || distanceToOverlap(overlaps, point) <= kOverlapNear;
+// (`overlaps` yields them: worked out only where the skeletons alone do not settle it.)
+template <class Overlaps>
+bool woodMeets(Overlaps&& overlaps, const Vec3& point, double reachA, double reachB) {
+  return (reachA <= kWoodReach && reachB <= kWoodReach) || distanceToOverlap(overlaps(), point) <= kOverlapNear;
 }
 
 // The stem whose surface a stem's collar stands in for: its parent (a clone's collar is its source's end).
@@ -120,7 +125,7 @@ class PairClassifier {
       h.reachA = stemReach(capsules(h.stemA, h.stemB, h.stemA), h.point, builtRadius(tree_.mesh, h.a));
       h.reachB = stemReach(capsules(h.stemA, h.stemB, h.stemB), h.point, builtRadius(tree_.mesh, h.b));
     }
-    bool meets = candidate && woodMeets(overlaps(h.stemA, h.stemB), h.point, h.reachA, h.reachB);
+    bool meets = candidate && woodMeets([&]() -> const auto& { return overlaps(h.stemA, h.stemB); }, h.point, h.reachA, h.reachB);
     // A child's collar lies on its parent's surface: a stem crossing that parent's wood crosses the collar too.
     if (candidate && !meets) {
       for (const auto& [x, fx, y] : {std::tuple{h.stemA, h.a, h.stemB}, std::tuple{h.stemB, h.b, h.stemA}}) {
@@ -130,7 +135,7 @@ class PairClassifier {
         const std::vector<Capsule>& cp = capsules(x, py, py);
         const double reachX = stemReach(cx, h.point, builtRadius(tree_.mesh, fx));
         const double reachP = stemReach(cp, h.point);
-        if (woodMeets(overlaps(x, py), h.point, reachX, reachP)) meets = true;
+        if (woodMeets([&, xs = x]() -> const auto& { return overlaps(xs, py); }, h.point, reachX, reachP)) meets = true;
       }
     }
     h.origin = meets ? PairOrigin::Skeleton : PairOrigin::Mesh;
@@ -207,31 +212,43 @@ double millisecondsSince(std::chrono::steady_clock::time_point start) {
 
 namespace {
 
-// visit(i, j, hits) for every two items of the BVH whose boxes overlap, on up to every core once there are
-// `threadsFrom` items; the hits of all threads together, sorted.
-template <class Visit>
-std::vector<QuadPairHit> overlappingPairs(const QuadBvh& bvh, std::size_t threadsFrom, Visit&& visit) {
-  const unsigned threads = bvh.items.size() < threadsFrom ? 1u : std::clamp(std::thread::hardware_concurrency(), 1u, 16u);
-  // Many more tasks than threads, taken in turn: subtrees differ widely in work.
-  const std::vector<NodePair> tasks = splitOverlapTasks(bvh, threads == 1 ? 1 : 64 * threads);
+// How many threads overlappingPairs takes for `items` items: one below `threadsFrom`, else every core.
+unsigned threadsFor(std::size_t items, std::size_t threadsFrom) {
+  return items < threadsFrom ? 1u : std::clamp(std::thread::hardware_concurrency(), 1u, 16u);
+}
+
+// task(k, t) for every k < count on thread t of `threads`, each taking the next k in turn.
+template <class Task>
+void inParallel(std::size_t count, unsigned threads, Task&& task) {
   std::atomic<std::size_t> next{0};
-  std::vector<std::vector<QuadPairHit>> found(threads);
   auto work = [&](unsigned t) {
-    for (std::size_t k = next++; k < tasks.size(); k = next++) {
-      forEachOverlappingPair(bvh, tasks[k], [&](std::uint32_t i, std::uint32_t j) { visit(i, j, found[t]); });
-    }
+    for (std::size_t k = next++; k < count; k = next++) task(k, t);
   };
   if (threads == 1) {
     work(0);
-  } else {
-    std::vector<std::thread> pool;
-    for (unsigned t = 0; t < threads; ++t) pool.emplace_back(work, t);
-    for (std::thread& t : pool) t.join();
+    return;
   }
+  std::vector<std::thread> pool;
+  for (unsigned t = 0; t < threads; ++t) pool.emplace_back(work, t);
+  for (std::thread& t : pool) t.join();
+}
+
+// The hits of all threads together, sorted.
+std::vector<QuadPairHit> gathered(std::vector<std::vector<QuadPairHit>>& found) {
   std::vector<QuadPairHit> hits;
   for (auto& f : found) hits.insert(hits.end(), f.begin(), f.end());
   sortHits(hits);
   return hits;
+}
+
+// visit(i, j, t) on thread t for every two items of the BVH whose boxes overlap, on `threads` threads.
+template <class Visit>
+void overlappingPairs(const QuadBvh& bvh, unsigned threads, Visit&& visit) {
+  // Many more tasks than threads, taken in turn: subtrees differ widely in work.
+  const std::vector<NodePair> tasks = splitOverlapTasks(bvh, threads == 1 ? 1 : 64 * threads);
+  inParallel(tasks.size(), threads, [&](std::size_t k, unsigned t) {
+    forEachOverlappingPair(bvh, tasks[k], [&](std::uint32_t i, std::uint32_t j) { visit(i, j, t); });
+  });
 }
 
 }  // namespace
@@ -240,9 +257,11 @@ std::vector<QuadPairHit> findIntersectingQuads(const QuadMesh& mesh) {
   const auto n = static_cast<std::uint32_t>(mesh.quads.size());
   std::vector<QuadBox> boxes(n);
   for (std::uint32_t f = 0; f < n; ++f) boxes[f] = boxOf(mesh, f);
-  return overlappingPairs(buildQuadBvh(boxes), kThreadsFrom, [&](std::uint32_t a, std::uint32_t b, std::vector<QuadPairHit>& hits) {
-    testPair(mesh, std::min(a, b), std::max(a, b), hits);
+  std::vector<std::vector<QuadPairHit>> found(threadsFor(n, kThreadsFrom));
+  overlappingPairs(buildQuadBvh(boxes), static_cast<unsigned>(found.size()), [&](std::uint32_t a, std::uint32_t b, unsigned t) {
+    testPair(mesh, std::min(a, b), std::max(a, b), found[t]);
   });
+  return gathered(found);
 }
 
 std::vector<QuadPairHit> findIntersectingQuadsBruteForce(const QuadMesh& mesh) {
@@ -309,15 +328,34 @@ std::vector<QuadPairHit> meshMadePairsOf(const TreeMesh& tree, const Skeleton& s
     runBoxes.back().hi = glm::max(runBoxes.back().hi, quadBoxes[f].hi);
   }
   if (runs.empty()) return {};
-  std::vector<QuadPairHit> hits = overlappingPairs(buildQuadBvh(runBoxes), kThreadsFrom / kRunQuads,
-                                                   [&](std::uint32_t i, std::uint32_t j, std::vector<QuadPairHit>& found) {
+  // Whether two runs' quads are to be tested: of two stems, one flagged, with a quad in a neck.
+  auto searched = [&](const Run& x, const Run& y) {
+    if (x.stem == y.stem || x.stem < 0 || y.stem < 0 || !(marked(x.stem) || marked(y.stem)) || !(x.neck || y.neck)) return false;
+    const StemRelation relation = relationOf(skeleton, x.stem, y.stem);
+    if (relation == StemRelation::CloneSource) return false;
+    // Against its parent, only a child's own neck: the parent's long neck runs along its children's tubes.
+    return relation != StemRelation::ParentChild || (skeleton.stems[static_cast<std::size_t>(x.stem)].parentStem == y.stem ? x.neck : y.neck);
+  };
+  // The run pairs to search, and per stem how many runs of others its neck meets: a crowded neck is then searched
+  // no more, which keeps the search linear in the stems where a thicket would make it quadratic.
+  const unsigned threads = threadsFor(runs.size(), kThreadsFrom / kRunQuads);
+  std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> runPairs(threads);
+  std::vector<std::vector<std::uint32_t>> met(threads, std::vector<std::uint32_t>(skeleton.stems.size(), 0));
+  overlappingPairs(buildQuadBvh(runBoxes), threads, [&](std::uint32_t i, std::uint32_t j, unsigned t) {
+    if (!searched(runs[i], runs[j])) return;
+    runPairs[t].emplace_back(i, j);
+    for (const Run* r : {&runs[i], &runs[j]}) met[t][static_cast<std::size_t>(r->stem)] += r->neck ? 1 : 0;
+  });
+  for (std::size_t t = 1; t < threads; ++t) {
+    for (std::size_t s = 0; s < met[0].size(); ++s) met[0][s] += met[t][s];
+    runPairs[0].insert(runPairs[0].end(), runPairs[t].begin(), runPairs[t].end());
+  }
+  for (Run& r : runs) r.neck = r.neck && met[0][static_cast<std::size_t>(r.stem)] <= kCrowdedNeck;
+  std::erase_if(runPairs[0], [&](const auto& p) { return !searched(runs[p.first], runs[p.second]); });
+  // Tests two runs' quads, each pair classified as it is found: only the mesh-made are kept.
+  auto search = [&](std::uint32_t i, std::uint32_t j, PairClassifier& classifier, std::vector<QuadPairHit>& found) {
     const Run& x = runs[i];
     const Run& y = runs[j];
-    if (x.stem == y.stem || x.stem < 0 || y.stem < 0 || !(marked(x.stem) || marked(y.stem)) || !(x.neck || y.neck)) return;
-    const StemRelation relation = relationOf(skeleton, x.stem, y.stem);
-    if (relation == StemRelation::CloneSource) return;
-    // Against its parent, only a child's own neck: the parent's long neck runs along its children's tubes.
-    if (relation == StemRelation::ParentChild && !(skeleton.stems[static_cast<std::size_t>(x.stem)].parentStem == y.stem ? x.neck : y.neck)) return;
     // Only the quads of each run that reach into the other run's box can meet.
     std::array<std::uint32_t, kRunQuads> near{};
     std::size_t count = 0;
@@ -329,16 +367,23 @@ std::vector<QuadPairHit> meshMadePairsOf(const TreeMesh& tree, const Skeleton& s
       if (!quadBoxes[a].overlaps(runBoxes[j])) continue;
       for (std::size_t k = 0; k < count; ++k) {
         const std::uint32_t b = near[k];
-        if (quadBoxes[a].overlaps(quadBoxes[b]) && quadContact(mesh.quads[a], mesh.quads[b]) == QuadContact::Apart) {
-          testPair(mesh, std::min(a, b), std::max(a, b), found);
-        }
+        if (!quadBoxes[a].overlaps(quadBoxes[b]) || quadContact(mesh.quads[a], mesh.quads[b]) != QuadContact::Apart) continue;
+        const std::size_t before = found.size();
+        testPair(mesh, std::min(a, b), std::max(a, b), found);
+        if (found.size() == before) continue;
+        classifier.classify(found.back());
+        if (found.back().origin != PairOrigin::Mesh) found.pop_back();
       }
     }
+  };
+  std::vector<PairClassifier> classifiers(threads, PairClassifier(tree, skeleton));
+  std::vector<std::vector<QuadPairHit>> hits(threads);
+  constexpr std::size_t kChunk = 64;  // run pairs a thread takes at once
+  const std::vector<std::pair<std::uint32_t, std::uint32_t>>& pairs = runPairs[0];
+  inParallel((pairs.size() + kChunk - 1) / kChunk, threads, [&](std::size_t c, unsigned t) {
+    for (std::size_t k = c * kChunk; k < std::min(pairs.size(), (c + 1) * kChunk); ++k) search(pairs[k].first, pairs[k].second, classifiers[t], hits[t]);
   });
-  PairClassifier classifier(tree, skeleton);
-  for (QuadPairHit& h : hits) classifier.classify(h);
-  std::erase_if(hits, [](const QuadPairHit& h) { return h.origin != PairOrigin::Mesh; });
-  return hits;
+  return gathered(hits);
 }
 
 std::size_t meshMadeIntersections(const TreeMesh& tree, const Skeleton& skeleton) {
