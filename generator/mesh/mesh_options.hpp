@@ -32,9 +32,9 @@ struct MeshOptions {
   // without it); a stem whose children are all faked is a twig, faked where its wood never clears its
   // parent's; off: meshed from that far slab, however far it is.
   bool fakeDisplaced = true;
-  // With fakeDisplaced: a twig (from level 2 on, with its clones; or a branch bearing only twigs, with them) in a
-  // mesh-made pair at a neck or first band (its own or the other stem's) is taken out of the built mesh and drawn
-  // as fake branches (crossing_twigs.hpp).
+  // With fakeDisplaced: a twig (from level 2 on, or thin at level 1, with its clones; or a branch bearing only
+  // twigs, with them) in a mesh-made pair at a neck or first band (its own or the other stem's) is taken out of the
+  // built mesh and drawn as fake branches (crossing_twigs.hpp).
   bool fakeCrossingTwigs = true;
 };
 
