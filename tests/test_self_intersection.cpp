@@ -493,7 +493,8 @@ TEST_CASE("a mesh-made pair in the neck of a child leaving at under 34 degrees i
 
 TEST_CASE("a twig whose neck crosses another stem where the skeletons do not is a fake branch, its port closed", "[mesh][self-intersection]") {
   // Mesh-made pairs when written, before -> after: the CA black oak preset at seed 1 20 -> 0 (a twig with its two
-  // clones), the willow preset at seed 2 30 -> 13 (three twigs with 32 clones); the aspen file 25 -> 0 (all at
+  // clones), the willow preset at seed 2 30 -> 13 (three twigs with 32 clones), the palm preset at seed 2 14 -> 0
+  // (thin level-1 fronds); the aspen file 25 -> 0 (all at
   // twigs' necks), the tupelo file 12 -> 0 (two branches bearing only twigs among them), the desert bush file
   // 23 -> 10 (the rest at limbs' necks).
   struct Case {
@@ -504,6 +505,7 @@ TEST_CASE("a twig whose neck crosses another stem where the skeletons do not is 
   };
   const Case tree = GENERATE(values<Case>({{"ca-black-oak", false, 1, true},
                                         {"weeping-willow", false, 2, false},
+                                        {"palm", false, 2, true},
                                         {"quaking_aspen", true, 1, true},
                                         {"black_tupelo", true, 1, true},
                                         {"desert_bush", true, 1, false}}));
