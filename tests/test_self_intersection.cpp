@@ -495,7 +495,8 @@ TEST_CASE("a twig whose neck crosses another stem where the skeletons do not is 
   // Mesh-made pairs when written, before -> after: the CA black oak preset at seed 1 20 -> 0 (a twig with its two
   // clones), the willow preset at seed 2 30 -> 13 (three twigs with 32 clones), the palm preset at seed 2 14 -> 0
   // (thin level-1 fronds); the aspen file 25 -> 0 (all at
-  // twigs' necks), the tupelo file 12 -> 0 (two branches bearing only twigs among them), the desert bush file
+  // twigs' necks), the tupelo file 12 -> 0 (two branches bearing only twigs among them), the sassafras file at
+  // seed 2 12 -> 0 (branches bearing only twigs, each neck through its own tube), the desert bush file
   // 23 -> 10 (the rest at limbs' necks).
   struct Case {
     const char* name;
@@ -508,6 +509,7 @@ TEST_CASE("a twig whose neck crosses another stem where the skeletons do not is 
                                         {"palm", false, 2, true},
                                         {"quaking_aspen", true, 1, true},
                                         {"black_tupelo", true, 1, true},
+                                        {"sassafras", true, 2, true},
                                         {"desert_bush", true, 1, false}}));
   INFO(tree.name << " at seed " << tree.seed);
   if (tree.arbaroFile && test::arbaroSpeciesFiles(ARBOR_SPECIES_DIR).empty()) return;  // it said why

@@ -330,7 +330,8 @@ std::vector<QuadPairHit> meshMadePairsOf(const TreeMesh& tree, const Skeleton& s
   if (runs.empty()) return {};
   // Whether two runs' quads are to be tested: of two stems, one flagged, with a quad in a neck.
   auto searched = [&](const Run& x, const Run& y) {
-    if (x.stem == y.stem || x.stem < 0 || y.stem < 0 || !(marked(x.stem) || marked(y.stem)) || !(x.neck || y.neck)) return false;
+    if (x.stem < 0 || y.stem < 0 || !(marked(x.stem) || marked(y.stem)) || !(x.neck || y.neck)) return false;
+    if (x.stem == y.stem) return true;  // a neck through its own stem's tube
     const StemRelation relation = relationOf(skeleton, x.stem, y.stem);
     if (relation == StemRelation::CloneSource) return false;
     // Against its parent, only a child's own neck: the parent's long neck runs along its children's tubes.
