@@ -398,6 +398,33 @@ TEST_CASE("twigs attached along a long neck leave through it where they attach, 
   for (double offset : kept) CHECK(offset <= 1.5);
 }
 
+TEST_CASE("twigs a second pass leaves past the joint floor are taken out of that mesh, their ports closed", "[graph][mesh]") {
+  // A random graph of 5,000 internodes: at seed 1 the first pass leaves 13 twigs past the floor, the second,
+  // meshed without them, 2 more, which are taken out of it rather than meshing the graph a third time.
+  const Skeleton s = graphToSkeleton(randomBranchGraph(1, 5000));
+  const TreeMesh tree = buildTreeMesh(s);
+  test::checkClosedManifold(tree.mesh);
+  std::vector<bool> bearing(s.stems.size(), false);  // a stem with a child or clone: not a twig
+  for (const SkeletonStem& st : s.stems) {
+    for (int up : {st.parentStem, st.cloneOf}) {
+      if (up >= 0) bearing[static_cast<std::size_t>(up)] = true;
+    }
+  }
+  std::size_t twigs = 0;
+  for (const ChildPlacement& c : childPlacements(s, tree)) {
+    if (bearing[static_cast<std::size_t>(c.stem)]) continue;
+    ++twigs;
+    INFO("twig " << c.stem << ": first ring " << c.offset << " parent radii along from its attachment");
+    CHECK(c.offset <= 1.5);
+  }
+  CHECK(twigs > 50);
+  // A stem taken out leaves nothing behind: no ring, no quad.
+  for (int f : tree.fakedStems) {
+    CHECK(std::none_of(tree.rings.begin(), tree.rings.end(), [&](const MeshRing& r) { return r.stem == f; }));
+    CHECK(std::find(tree.quadStem.begin(), tree.quadStem.end(), f) == tree.quadStem.end());
+  }
+}
+
 TEST_CASE("a twig its parent could join only more than half a parent radius from where it attaches is a fake branch", "[graph][mesh]") {
   // The branch of the test above, its twigs piled on its first slab (no neck ports): 9.1, 5.2 and 1.3 branch
   // radii (0.1 m) from their attachments, each twig 0.6 m long; a fourth leaves 2.8 m along, past where the tube

@@ -130,8 +130,8 @@ struct TakenOut {
 };
 
 // Takes the listed twigs' quads out, closes each port, drops the vertices no quad uses any more; returns the
-// twigs taken out (those with a port to close).
-TakenOut takeOut(TreeMesh& tree, const Skeleton& skeleton, const std::vector<int>& root, const std::vector<int>& twigs) {
+// twigs taken out (those with a port to close; with `allOrNothing`, none unless every twig with quads has one).
+TakenOut takeOut(TreeMesh& tree, const Skeleton& skeleton, const std::vector<int>& root, const std::vector<int>& twigs, bool allOrNothing = false) {
   QuadMesh& mesh = tree.mesh;
   std::vector<std::uint32_t> uses(mesh.vertexCount(), 0);
   for (const Quad& q : mesh.quads) {
@@ -165,6 +165,7 @@ TakenOut takeOut(TreeMesh& tree, const Skeleton& skeleton, const std::vector<int
   for (std::size_t t = 0; t < twigs.size(); ++t) {
     ports[t] = portFace(mesh, quadsOf[t], uses);
     if (ports[t]) out.twigs.push_back(twigs[t]);
+    if (allOrNothing && !ports[t] && !quadsOf[t].empty()) return TakenOut{};
   }
   if (out.twigs.empty()) return out;
   // The port's face takes the place of the twig's first quad; the twig's other quads go.
@@ -219,6 +220,21 @@ TakenOut takeOut(TreeMesh& tree, const Skeleton& skeleton, const std::vector<int
 }
 
 }  // namespace
+
+bool takeOutTwigs(TreeMesh& tree, const Skeleton& skeleton, const std::vector<int>& stems) {
+  const std::vector<int> root = familyRoots(skeleton);
+  std::vector<int> twigs;
+  for (int s : stems) {
+    if (s < 0 || static_cast<std::size_t>(s) >= skeleton.stems.size() || root[static_cast<std::size_t>(s)] != s) return false;
+    twigs.push_back(s);
+  }
+  std::sort(twigs.begin(), twigs.end());
+  twigs.erase(std::unique(twigs.begin(), twigs.end()), twigs.end());
+  if (twigs.empty()) return true;
+  if (takeOut(tree, skeleton, root, twigs, true).twigs.empty()) return false;
+  computeNormals(tree.mesh);
+  return true;
+}
 
 std::size_t fakeCrossingTwigs(TreeMesh& tree, const Skeleton& skeleton) {
   const std::vector<int> root = familyRoots(skeleton);

@@ -3,6 +3,7 @@
 // wants gone) are taken out of the built mesh and drawn as fake branches; each one's port in its parent is
 // closed again by the face the twig replaced.
 #include <cstddef>
+#include <vector>
 
 #include "growth/skeleton.hpp"
 #include "tree_mesh.hpp"
@@ -17,5 +18,9 @@ namespace arbor {
 // skeleton; a twig's neck through its own tube counts), adds its stems to tree.fakedStems and returns how many twigs were taken out. A twig whose quads do
 // not meet the rest of the mesh in exactly one four-sided port stays.
 std::size_t fakeCrossingTwigs(TreeMesh& tree, const Skeleton& skeleton);
+
+// Takes the listed stems (none a clone), each with its clones and descendants, out of the built mesh the same way,
+// adding them to tree.fakedStems; all or, where one does not meet the rest in one four-sided port, none (false).
+bool takeOutTwigs(TreeMesh& tree, const Skeleton& skeleton, const std::vector<int>& stems);
 
 }  // namespace arbor
