@@ -353,6 +353,10 @@ std::vector<QuadPairHit> meshMadePairsOf(const TreeMesh& tree, const Skeleton& s
   }
   for (Run& r : runs) r.neck = r.neck && met[0][static_cast<std::size_t>(r.stem)] <= kCrowdedNeck;
   std::erase_if(runPairs[0], [&](const auto& p) { return !searched(runs[p.first], runs[p.second]); });
+  // A flagged stem's neck run against itself: its own neck folding through itself.
+  for (std::uint32_t r = 0; r < runs.size(); ++r) {
+    if (runs[r].neck && runs[r].stem >= 0 && marked(runs[r].stem)) runPairs[0].emplace_back(r, r);
+  }
   // Tests two runs' quads, each pair classified as it is found: only the mesh-made are kept.
   auto search = [&](std::uint32_t i, std::uint32_t j, PairClassifier& classifier, std::vector<QuadPairHit>& found) {
     const Run& x = runs[i];
@@ -368,7 +372,7 @@ std::vector<QuadPairHit> meshMadePairsOf(const TreeMesh& tree, const Skeleton& s
       if (!quadBoxes[a].overlaps(runBoxes[j])) continue;
       for (std::size_t k = 0; k < count; ++k) {
         const std::uint32_t b = near[k];
-        if (!quadBoxes[a].overlaps(quadBoxes[b]) || quadContact(mesh.quads[a], mesh.quads[b]) != QuadContact::Apart) continue;
+        if ((i == j && b <= a) || !quadBoxes[a].overlaps(quadBoxes[b]) || quadContact(mesh.quads[a], mesh.quads[b]) != QuadContact::Apart) continue;
         const std::size_t before = found.size();
         testPair(mesh, std::min(a, b), std::max(a, b), found);
         if (found.size() == before) continue;
