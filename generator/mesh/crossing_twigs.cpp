@@ -39,8 +39,8 @@ std::vector<int> familyRoots(const Skeleton& skeleton) {
 }
 
 // Per stem, whether it belongs to a twig this pass may take out: a family (a stem with the clones it splits
-// into) with quads, from level 2 on (or thin at level 1), whose meshed descendants lie at most kMaxHeight families below it (a branch
-// bearing only twigs: they go with it).
+// into) with quads, from level 2 on (or thin at level 1), whose meshed descendants lie at most kMaxHeight families
+// below it (a branch bearing only twigs: they go with it).
 std::vector<bool> twigsOf(const TreeMesh& tree, const Skeleton& skeleton, const std::vector<int>& root, int maxHeight = kMaxHeight) {
   const std::size_t n = skeleton.stems.size();
   std::vector<bool> meshed(n, false), twig(n, false);
@@ -131,7 +131,8 @@ struct TakenOut {
 
 // Takes the listed twigs' quads out, closes each port, drops the vertices no quad uses any more; returns the
 // twigs taken out (those with a port to close; with `allOrNothing`, none unless every twig with quads has one).
-TakenOut takeOut(TreeMesh& tree, const Skeleton& skeleton, const std::vector<int>& root, const std::vector<int>& twigs, bool allOrNothing = false) {
+TakenOut takeOut(TreeMesh& tree, const Skeleton& skeleton, const std::vector<int>& root, const std::vector<int>& twigs,
+                 bool allOrNothing = false) {
   QuadMesh& mesh = tree.mesh;
   std::vector<std::uint32_t> uses(mesh.vertexCount(), 0);
   for (const Quad& q : mesh.quads) {

@@ -345,6 +345,7 @@ std::vector<QuadPairHit> meshMadePairsOf(const TreeMesh& tree, const Skeleton& s
   overlappingPairs(buildQuadBvh(runBoxes), threads, [&](std::uint32_t i, std::uint32_t j, unsigned t) {
     if (!searched(runs[i], runs[j])) return;
     runPairs[t].emplace_back(i, j);
+    if (runs[i].stem == runs[j].stem) return;
     for (const Run* r : {&runs[i], &runs[j]}) met[t][static_cast<std::size_t>(r->stem)] += r->neck ? 1 : 0;
   });
   for (std::size_t t = 1; t < threads; ++t) {
@@ -372,7 +373,8 @@ std::vector<QuadPairHit> meshMadePairsOf(const TreeMesh& tree, const Skeleton& s
       if (!quadBoxes[a].overlaps(runBoxes[j])) continue;
       for (std::size_t k = 0; k < count; ++k) {
         const std::uint32_t b = near[k];
-        if ((i == j && b <= a) || !quadBoxes[a].overlaps(quadBoxes[b]) || quadContact(mesh.quads[a], mesh.quads[b]) != QuadContact::Apart) continue;
+        if (i == j && b <= a) continue;
+        if (!quadBoxes[a].overlaps(quadBoxes[b]) || quadContact(mesh.quads[a], mesh.quads[b]) != QuadContact::Apart) continue;
         const std::size_t before = found.size();
         testPair(mesh, std::min(a, b), std::max(a, b), found);
         if (found.size() == before) continue;
@@ -386,7 +388,9 @@ std::vector<QuadPairHit> meshMadePairsOf(const TreeMesh& tree, const Skeleton& s
   constexpr std::size_t kChunk = 64;  // run pairs a thread takes at once
   const std::vector<std::pair<std::uint32_t, std::uint32_t>>& pairs = runPairs[0];
   inParallel((pairs.size() + kChunk - 1) / kChunk, threads, [&](std::size_t c, unsigned t) {
-    for (std::size_t k = c * kChunk; k < std::min(pairs.size(), (c + 1) * kChunk); ++k) search(pairs[k].first, pairs[k].second, classifiers[t], hits[t]);
+    for (std::size_t k = c * kChunk; k < std::min(pairs.size(), (c + 1) * kChunk); ++k) {
+      search(pairs[k].first, pairs[k].second, classifiers[t], hits[t]);
+    }
   });
   return gathered(hits);
 }

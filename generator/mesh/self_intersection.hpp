@@ -60,10 +60,11 @@ SelfIntersectionReport checkSelfIntersections(const TreeMesh& tree, const Skelet
 
 // The mesh-made pairs between a quad of a stem flagged in `stems` (one flag per skeleton stem) and another quad
 // (of another stem, or of its own: a neck through its own tube), where one of the two lies in its stem's neck or
-// first band, classified as above, sorted. Left out: pairs of a clone with its source (which it leaves through its end), or sharing a corner (the quads
-// around every port: most of the work), and necks crowded by other stems (a thicket the skeleton made, where the
-// search would grow with the square of the stems). Over a BVH of runs of each stem's quads, on every core for a
-// large mesh, keeping only the mesh-made pairs as it goes: cheap enough to run after every build.
+// first band, classified as above, sorted. Left out: pairs of a clone with its source (which it leaves through its
+// end), or sharing a corner (the quads around every port: most of the work), and necks crowded by other stems (a
+// thicket the skeleton made, where the search would grow with the square of the stems). Over a BVH of runs of
+// each stem's quads, on every core for a large mesh, keeping only the mesh-made pairs as it goes: cheap enough to
+// run after every build.
 std::vector<QuadPairHit> meshMadePairsOf(const TreeMesh& tree, const Skeleton& skeleton, const std::vector<bool>& stems);
 // The number the mesher must bring to 0: pairs of quads that intersect where the skeleton does not.
 std::size_t meshMadeIntersections(const TreeMesh& tree, const Skeleton& skeleton);
