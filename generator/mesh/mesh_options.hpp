@@ -33,8 +33,8 @@ struct MeshOptions {
   // parent's; off: meshed from that far slab, however far it is.
   bool fakeDisplaced = true;
   // With fakeDisplaced: a twig (from level 2 on, or thin at level 1, with its clones; or a branch bearing only
-  // twigs, with them) in a mesh-made pair at a neck or first band (its own or the other stem's) is taken out of the
-  // built mesh and drawn as fake branches (crossing_twigs.hpp).
+  // twigs, with them) in a mesh-made pair at a neck or first band (its own or the other stem's), or at the tip of a
+  // stem bearing children, is taken out of the built mesh and drawn as fake branches (crossing_twigs.hpp).
   bool fakeCrossingTwigs = true;
 };
 

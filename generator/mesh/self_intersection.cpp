@@ -188,6 +188,29 @@ std::vector<bool> neckQuads(const TreeMesh& tree) {
   return neck;
 }
 
+// Per quad, whether it lies on the last cross section (the last band or the tip's cap) of a stem that bears
+// children: such a tip reaches past the skeleton's end among the twigs around it.
+std::vector<bool> bearingTipQuads(const TreeMesh& tree, const Skeleton& skeleton) {
+  std::vector<bool> bearing(skeleton.stems.size(), false);
+  for (const SkeletonStem& st : skeleton.stems) {
+    if (st.parentStem >= 0 && static_cast<std::size_t>(st.parentStem) < bearing.size()) bearing[static_cast<std::size_t>(st.parentStem)] = true;
+  }
+  std::vector<const MeshRing*> last(skeleton.stems.size(), nullptr);
+  for (const MeshRing& ring : tree.rings) {
+    if (ring.stem >= 0 && static_cast<std::size_t>(ring.stem) < last.size() && ring.arc >= 0.0) last[static_cast<std::size_t>(ring.stem)] = &ring;
+  }
+  std::vector<int> tipOf(tree.mesh.vertexCount(), -1);
+  for (std::size_t s = 0; s < last.size(); ++s) {
+    if (!last[s] || !bearing[s]) continue;
+    for (std::uint32_t v : last[s]->vertices) tipOf[v] = static_cast<int>(s);
+  }
+  std::vector<bool> tip(tree.mesh.quads.size(), false);
+  for (std::size_t f = 0; f < tip.size() && f < tree.quadStem.size(); ++f) {
+    for (std::uint32_t v : tree.mesh.quads[f]) tip[f] = tip[f] || (tree.quadStem[f] >= 0 && tipOf[v] == tree.quadStem[f]);
+  }
+  return tip;
+}
+
 SelfIntersectionReport summarise(std::vector<QuadPairHit> hits, std::size_t quads, bool classified) {
   SelfIntersectionReport r;
   r.quads = quads;
@@ -310,17 +333,18 @@ std::vector<QuadPairHit> meshMadePairsOf(const TreeMesh& tree, const Skeleton& s
   struct Run {
     std::uint32_t begin = 0, end = 0;
     int stem = -1;
-    bool neck = false;
+    bool neck = false, tip = false;
   };
-  const std::vector<bool> neck = neckQuads(tree);
+  const std::vector<bool> neck = neckQuads(tree), tip = bearingTipQuads(tree, skeleton);
   std::vector<QuadBox> quadBoxes(n);
   std::vector<Run> runs;
   std::vector<QuadBox> runBoxes;
   for (std::uint32_t f = 0; f < n; ++f) {
     quadBoxes[f] = boxOf(mesh, f);
     const int stem = tree.quadStem[f];
-    if (runs.empty() || runs.back().stem != stem || runs.back().neck != neck[f] || runs.back().end - runs.back().begin == kRunQuads) {
-      runs.push_back(Run{f, f, stem, neck[f]});
+    if (runs.empty() || runs.back().stem != stem || runs.back().neck != neck[f] || runs.back().tip != tip[f] ||
+        runs.back().end - runs.back().begin == kRunQuads) {
+      runs.push_back(Run{f, f, stem, neck[f], tip[f]});
       runBoxes.push_back(quadBoxes[f]);
     }
     runs.back().end = f + 1;
@@ -330,8 +354,8 @@ std::vector<QuadPairHit> meshMadePairsOf(const TreeMesh& tree, const Skeleton& s
   if (runs.empty()) return {};
   // Whether two runs' quads are to be tested: of two stems, one flagged, with a quad in a neck.
   auto searched = [&](const Run& x, const Run& y) {
-    if (x.stem < 0 || y.stem < 0 || !(marked(x.stem) || marked(y.stem)) || !(x.neck || y.neck)) return false;
-    if (x.stem == y.stem) return true;  // a neck through its own stem's tube
+    if (x.stem < 0 || y.stem < 0 || !(marked(x.stem) || marked(y.stem)) || !(x.neck || y.neck || x.tip || y.tip)) return false;
+    if (x.stem == y.stem) return x.neck || y.neck;  // a neck through its own stem's tube
     const StemRelation relation = relationOf(skeleton, x.stem, y.stem);
     if (relation == StemRelation::CloneSource) return false;
     // Against its parent, only a child's own neck: the parent's long neck runs along its children's tubes.
@@ -346,13 +370,17 @@ std::vector<QuadPairHit> meshMadePairsOf(const TreeMesh& tree, const Skeleton& s
     if (!searched(runs[i], runs[j])) return;
     runPairs[t].emplace_back(i, j);
     if (runs[i].stem == runs[j].stem) return;
-    for (const Run* r : {&runs[i], &runs[j]}) met[t][static_cast<std::size_t>(r->stem)] += r->neck ? 1 : 0;
+    for (const Run* r : {&runs[i], &runs[j]}) met[t][static_cast<std::size_t>(r->stem)] += r->neck || r->tip ? 1 : 0;
   });
   for (std::size_t t = 1; t < threads; ++t) {
     for (std::size_t s = 0; s < met[0].size(); ++s) met[0][s] += met[t][s];
     runPairs[0].insert(runPairs[0].end(), runPairs[t].begin(), runPairs[t].end());
   }
-  for (Run& r : runs) r.neck = r.neck && met[0][static_cast<std::size_t>(r.stem)] <= kCrowdedNeck;
+  for (Run& r : runs) {
+    const bool crowded = met[0][static_cast<std::size_t>(r.stem)] > kCrowdedNeck;
+    r.neck = r.neck && !crowded;
+    r.tip = r.tip && !crowded;
+  }
   std::erase_if(runPairs[0], [&](const auto& p) { return !searched(runs[p.first], runs[p.second]); });
   // A flagged stem's neck run against itself: its own neck folding through itself.
   for (std::uint32_t r = 0; r < runs.size(); ++r) {
