@@ -352,17 +352,18 @@ std::vector<QuadPairHit> meshMadePairsOf(const TreeMesh& tree, const Skeleton& s
     runBoxes.back().hi = glm::max(runBoxes.back().hi, quadBoxes[f].hi);
   }
   if (runs.empty()) return {};
-  // Whether two runs' quads are to be tested: of two stems, one flagged, with a quad in a neck.
+  // Whether two runs' quads are to be tested: of two stems, one flagged, with a quad in a neck or a bearing tip.
   auto searched = [&](const Run& x, const Run& y) {
-    if (x.stem < 0 || y.stem < 0 || !(marked(x.stem) || marked(y.stem)) || !(x.neck || y.neck || x.tip || y.tip)) return false;
+    if (x.stem < 0 || y.stem < 0 || !(marked(x.stem) || marked(y.stem))) return false;
+    if (!(x.neck || y.neck || x.tip || y.tip)) return false;
     if (x.stem == y.stem) return x.neck || y.neck;  // a neck through its own stem's tube
     const StemRelation relation = relationOf(skeleton, x.stem, y.stem);
     if (relation == StemRelation::CloneSource) return false;
     // Against its parent, only a child's own neck: the parent's long neck runs along its children's tubes.
     return relation != StemRelation::ParentChild || (skeleton.stems[static_cast<std::size_t>(x.stem)].parentStem == y.stem ? x.neck : y.neck);
   };
-  // The run pairs to search, and per stem how many runs of others its neck meets: a crowded neck is then searched
-  // no more, which keeps the search linear in the stems where a thicket would make it quadratic.
+  // The run pairs to search, and per stem how many runs of others its neck (or tip) meets: a crowded one is then
+  // searched no more, which keeps the search linear in the stems where a thicket would make it quadratic.
   const unsigned threads = threadsFor(runs.size(), kThreadsFrom / kRunQuads);
   std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> runPairs(threads);
   std::vector<std::vector<std::uint32_t>> met(threads, std::vector<std::uint32_t>(skeleton.stems.size(), 0));
