@@ -378,7 +378,7 @@ std::vector<QuadPairHit> meshMadePairsOf(const TreeMesh& tree, const Skeleton& s
     runPairs[0].insert(runPairs[0].end(), runPairs[t].begin(), runPairs[t].end());
   }
   for (Run& r : runs) {
-    const bool crowded = met[0][static_cast<std::size_t>(r.stem)] > kCrowdedNeck;
+    const bool crowded = r.stem >= 0 && met[0][static_cast<std::size_t>(r.stem)] > kCrowdedNeck;
     r.neck = r.neck && !crowded;
     r.tip = r.tip && !crowded;
   }
