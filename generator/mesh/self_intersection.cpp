@@ -25,8 +25,9 @@ constexpr double kCageReach = 1.52;
 constexpr double kOverlapNear = 2.0;
 // Fewer quads than this are checked on one thread: starting threads would cost more than it saves.
 constexpr std::size_t kThreadsFrom = 20000;
-// A stem whose neck runs meet more runs of other stems than this lies in a thicket the skeleton made (a fuzzed
-// palm of 64 trunks: a median of 740, and a million crossing quads); on every preset and Arbaro file at most 34.
+// A stem whose neck (or tip) runs meet more runs of other stems than this lies in a thicket the skeleton made (a
+// fuzzed palm of 64 trunks: a median of 740, and a million crossing quads); on every preset and Arbaro file at
+// most 74 (a willow trunk clone's tip; 34 by necks alone).
 constexpr std::uint32_t kCrowdedNeck = 128;
 // A few bands of one stem (4 quads a band) make one box of meshMadePairsOf's hierarchy.
 constexpr std::uint32_t kRunQuads = 16;
