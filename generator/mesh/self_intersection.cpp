@@ -169,6 +169,16 @@ class PairClassifier {
   std::unordered_map<std::uint64_t, std::vector<WoodOverlap>> overlaps_;
 };
 
+// Per quad, whether one of its corners lies on a cross section of its own stem marked in `ringOf` (per vertex, the
+// stem whose marked cross section it is on; -1 for none).
+std::vector<bool> quadsOnOwnRings(const TreeMesh& tree, const std::vector<int>& ringOf) {
+  std::vector<bool> on(tree.mesh.quads.size(), false);
+  for (std::size_t f = 0; f < on.size() && f < tree.quadStem.size(); ++f) {
+    for (std::uint32_t v : tree.mesh.quads[f]) on[f] = on[f] || (tree.quadStem[f] >= 0 && ringOf[v] == tree.quadStem[f]);
+  }
+  return on;
+}
+
 // Per quad, whether it lies in its own stem's neck or first band: a corner on one of the stem's cross sections
 // before its first on the skeleton (an inset or a collar).
 std::vector<bool> neckQuads(const TreeMesh& tree) {
@@ -182,11 +192,7 @@ std::vector<bool> neckQuads(const TreeMesh& tree) {
     if (pastNeck[stem]) continue;
     for (std::uint32_t v : ring.vertices) neckOf[v] = ring.stem;
   }
-  std::vector<bool> neck(tree.mesh.quads.size(), false);
-  for (std::size_t f = 0; f < neck.size() && f < tree.quadStem.size(); ++f) {
-    for (std::uint32_t v : tree.mesh.quads[f]) neck[f] = neck[f] || (tree.quadStem[f] >= 0 && neckOf[v] == tree.quadStem[f]);
-  }
-  return neck;
+  return quadsOnOwnRings(tree, neckOf);
 }
 
 // Per quad, whether it lies on the last cross section (the last band or the tip's cap) of a stem that bears
@@ -205,11 +211,7 @@ std::vector<bool> bearingTipQuads(const TreeMesh& tree, const Skeleton& skeleton
     if (!last[s] || !bearing[s]) continue;
     for (std::uint32_t v : last[s]->vertices) tipOf[v] = static_cast<int>(s);
   }
-  std::vector<bool> tip(tree.mesh.quads.size(), false);
-  for (std::size_t f = 0; f < tip.size() && f < tree.quadStem.size(); ++f) {
-    for (std::uint32_t v : tree.mesh.quads[f]) tip[f] = tip[f] || (tree.quadStem[f] >= 0 && tipOf[v] == tree.quadStem[f]);
-  }
-  return tip;
+  return quadsOnOwnRings(tree, tipOf);
 }
 
 SelfIntersectionReport summarise(std::vector<QuadPairHit> hits, std::size_t quads, bool classified) {
@@ -386,7 +388,7 @@ std::vector<QuadPairHit> meshMadePairsOf(const TreeMesh& tree, const Skeleton& s
   std::erase_if(runPairs[0], [&](const auto& p) { return !searched(runs[p.first], runs[p.second]); });
   // A flagged stem's neck run against itself: its own neck folding through itself.
   for (std::uint32_t r = 0; r < runs.size(); ++r) {
-    if (runs[r].neck && runs[r].stem >= 0 && marked(runs[r].stem)) runPairs[0].emplace_back(r, r);
+    if (runs[r].neck && marked(runs[r].stem)) runPairs[0].emplace_back(r, r);
   }
   // Tests two runs' quads, each pair classified as it is found: only the mesh-made are kept.
   auto search = [&](std::uint32_t i, std::uint32_t j, PairClassifier& classifier, std::vector<QuadPairHit>& found) {
