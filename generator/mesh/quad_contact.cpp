@@ -153,7 +153,7 @@ std::optional<Vec3> quadsMeet(const QuadCorners& a, const QuadCorners& b) {
   const double tol = std::max(kRelativeTolerance * size, kFloatSteps * std::max({reach.x, reach.y, reach.z}));
   // On a shared edge a fold closes within kFoldAngle, farther than tol: keep such pairs for the fold test.
   const double foldTol = std::max(tol, std::sin(kFoldAngle) * size);
-  const std::array<Triangle, 2> ta = split(a), tb = split(b);
+  const std::array<Triangle, 2> ta = split(a);
   // A triangle with the other quad's corners all clearly on one side of its plane (its own corners on it)
   // meets that quad nowhere: most candidate pairs end here.
   auto clear = [tol, foldTol](const Triangle& t, const QuadCorners& q) {
@@ -174,6 +174,7 @@ std::optional<Vec3> quadsMeet(const QuadCorners& a, const QuadCorners& b) {
   // Both of one quad's triangles clear of the other: done before the other two tests (a third of the mesher's time).
   const std::array<bool, 2> clearA{clear(ta[0], b), clear(ta[1], b)};
   if (clearA[0] && clearA[1]) return std::nullopt;
+  const std::array<Triangle, 2> tb = split(b);  // split only now: most pairs end with a's triangles
   const std::array<bool, 2> clearB{clear(tb[0], a), clear(tb[1], a)};
   if (clearB[0] && clearB[1]) return std::nullopt;
   for (std::size_t i = 0; i < 2; ++i) {

@@ -49,15 +49,20 @@ QuadBox boxOf(const QuadMesh& mesh, std::uint32_t f) {
   return b;
 }
 
-void testPair(const QuadMesh& mesh, std::uint32_t a, std::uint32_t b, std::vector<QuadPairHit>& hits) {
-  if (auto x = quadsMeet(cornersOf(mesh, a), cornersOf(mesh, b))) {
+// Quads a < b with their corners: a hit when they meet.
+void testPair(const QuadCorners& ca, const QuadCorners& cb, std::uint32_t a, std::uint32_t b, std::vector<QuadPairHit>& hits) {
+  if (auto x = quadsMeet(ca, cb)) {
     QuadPairHit h;
     h.a = a;
     h.b = b;
     h.point = *x;
-    h.contact = quadContact(mesh.quads[a], mesh.quads[b]);
+    h.contact = quadContact(ca.index, cb.index);
     hits.push_back(h);
   }
+}
+
+void testPair(const QuadMesh& mesh, std::uint32_t a, std::uint32_t b, std::vector<QuadPairHit>& hits) {
+  testPair(cornersOf(mesh, a), cornersOf(mesh, b), a, b, hits);
 }
 
 // The radius the mesher built a quad for (its corners' radius attribute): tips keep a third of the ring
@@ -391,24 +396,28 @@ std::vector<QuadPairHit> meshMadePairsOf(const TreeMesh& tree, const Skeleton& s
     if (runs[r].neck && marked(runs[r].stem)) runPairs[0].emplace_back(r, r);
   }
   // Tests two runs' quads, each pair classified as it is found: only the mesh-made are kept.
-  auto search = [&](std::uint32_t i, std::uint32_t j, PairClassifier& classifier, std::vector<QuadPairHit>& found) {
+  auto search = [&](std::uint32_t i, std::uint32_t j, PairClassifier& classifier, std::vector<QuadPairHit>& found,
+                    std::array<QuadCorners, kRunQuads>& nearCorners) {
     const Run& x = runs[i];
     const Run& y = runs[j];
-    // Only the quads of each run that reach into the other run's box can meet.
-    std::array<std::uint32_t, kRunQuads> near{};
+    // Only the quads of each run that reach into the other run's box can meet; their corners are read once.
+    std::array<std::uint32_t, kRunQuads> near;
     std::size_t count = 0;
     for (std::uint32_t b = y.begin; b < y.end; ++b) {
       if (quadBoxes[b].overlaps(runBoxes[i])) near[count++] = b;
     }
     if (count == 0) return;
+    for (std::size_t k = 0; k < count; ++k) nearCorners[k] = cornersOf(mesh, near[k]);
     for (std::uint32_t a = x.begin; a < x.end; ++a) {
       if (!quadBoxes[a].overlaps(runBoxes[j])) continue;
+      const QuadCorners ca = cornersOf(mesh, a);
       for (std::size_t k = 0; k < count; ++k) {
         const std::uint32_t b = near[k];
         if (i == j && b <= a) continue;
-        if (!quadBoxes[a].overlaps(quadBoxes[b]) || quadContact(mesh.quads[a], mesh.quads[b]) != QuadContact::Apart) continue;
+        if (!quadBoxes[a].overlaps(quadBoxes[b]) || quadContact(ca.index, nearCorners[k].index) != QuadContact::Apart) continue;
         const std::size_t before = found.size();
-        testPair(mesh, std::min(a, b), std::max(a, b), found);
+        if (a < b) testPair(ca, nearCorners[k], a, b, found);
+        else testPair(nearCorners[k], ca, b, a, found);
         if (found.size() == before) continue;
         classifier.classify(found.back());
         if (found.back().origin != PairOrigin::Mesh) found.pop_back();
@@ -417,11 +426,12 @@ std::vector<QuadPairHit> meshMadePairsOf(const TreeMesh& tree, const Skeleton& s
   };
   std::vector<PairClassifier> classifiers(threads, PairClassifier(tree, skeleton));
   std::vector<std::vector<QuadPairHit>> hits(threads);
+  std::vector<std::array<QuadCorners, kRunQuads>> corners(threads);  // per thread: the near quads' corners
   constexpr std::size_t kChunk = 64;  // run pairs a thread takes at once
   const std::vector<std::pair<std::uint32_t, std::uint32_t>>& pairs = runPairs[0];
   inParallel((pairs.size() + kChunk - 1) / kChunk, threads, [&](std::size_t c, unsigned t) {
     for (std::size_t k = c * kChunk; k < std::min(pairs.size(), (c + 1) * kChunk); ++k) {
-      search(pairs[k].first, pairs[k].second, classifiers[t], hits[t]);
+      search(pairs[k].first, pairs[k].second, classifiers[t], hits[t], corners[t]);
     }
   });
   return gathered(hits);
