@@ -14,6 +14,7 @@
 #include "mesh/self_intersection.hpp"
 #include "mesh/stem_capsules.hpp"
 #include "manifold_checks.hpp"
+#include "mesh_diff.hpp"
 #include "mesh_support.hpp"
 #include "growth/weber_penn/species_io.hpp"
 #include "test_support.hpp"
@@ -563,26 +564,16 @@ TEST_CASE("a twig whose neck crosses another stem where the skeletons do not is 
   // Nothing moved: every vertex left is one the mesh had, and every face but the ports is one it had.
   using Point = std::array<float, 3>;
   auto point = [](const glm::vec3& p) { return Point{p.x, p.y, p.z}; };
-  auto faceOf = [&](const QuadMesh& m, const std::array<std::uint32_t, 4>& q) {
-    std::array<Point, 4> f;
-    for (std::size_t k = 0; k < 4; ++k) f[k] = point(m.positions[q[k]]);
-    std::sort(f.begin(), f.end());
-    return f;
-  };
   std::set<Point> points;
   for (const glm::vec3& p : before.mesh.positions) points.insert(point(p));
   std::size_t moved = 0;
   for (const glm::vec3& p : after.mesh.positions) moved += points.contains(point(p)) ? 0 : 1;
   CHECK(moved == 0);
-  std::set<std::array<Point, 4>> faces;
-  for (const auto& q : before.mesh.quads) faces.insert(faceOf(before.mesh, q));
-  std::size_t ports = 0;
-  for (std::size_t f = 0; f < after.mesh.quads.size(); ++f) {
-    if (faces.contains(faceOf(after.mesh, after.mesh.quads[f]))) continue;
-    ++ports;
-    CHECK(parents.contains(after.quadStem[f]));  // a port face is its parent's surface again
-  }
-  CHECK(ports == twigs);
+  const std::vector<std::uint32_t> ports = test::newFaces(before.mesh, after.mesh);
+  for (std::uint32_t f : ports) CHECK(parents.contains(after.quadStem[f]));  // a port face is its parent's surface again
+  CHECK(ports.size() == twigs);
+  // A face that closed a port crosses nothing where the skeleton does not (a neighbouring twig's neck).
+  CHECK(meshMadePairsWith(after, skeleton, ports).empty());
 
   CHECK(test::checkClosedManifold(after.mesh).degenerateFaces == 0);
   CHECK(after.mesh.normals.size() == after.mesh.positions.size());

@@ -437,6 +437,31 @@ std::vector<QuadPairHit> meshMadePairsOf(const TreeMesh& tree, const Skeleton& s
   return gathered(hits);
 }
 
+std::vector<QuadPairHit> meshMadePairsWith(const TreeMesh& tree, const Skeleton& skeleton, const std::vector<std::uint32_t>& quads) {
+  const QuadMesh& mesh = tree.mesh;
+  std::vector<QuadBox> boxes;
+  for (std::uint32_t f : quads) boxes.push_back(boxOf(mesh, f));
+  if (boxes.empty()) return {};
+  const QuadBvh bvh = buildQuadBvh(boxes);
+  PairClassifier classifier(tree, skeleton);
+  std::vector<QuadPairHit> found;
+  for (std::uint32_t g = 0; g < mesh.quads.size(); ++g) {
+    forEachOverlap(bvh, boxOf(mesh, g), [&](std::uint32_t k) {
+      const std::uint32_t f = quads[k];
+      // A pair of two listed quads once.
+      if (f == g || quadContact(mesh.quads[f], mesh.quads[g]) != QuadContact::Apart) return;
+      if (std::binary_search(quads.begin(), quads.end(), g) && g < f) return;
+      const std::size_t before = found.size();
+      testPair(mesh, std::min(f, g), std::max(f, g), found);
+      if (found.size() == before) return;
+      classifier.classify(found.back());
+      if (found.back().origin != PairOrigin::Mesh) found.pop_back();
+    });
+  }
+  sortHits(found);
+  return found;
+}
+
 std::size_t meshMadeIntersections(const TreeMesh& tree, const Skeleton& skeleton) {
   return checkSelfIntersections(tree, skeleton).meshMade;
 }

@@ -66,6 +66,9 @@ SelfIntersectionReport checkSelfIntersections(const TreeMesh& tree, const Skelet
 // each stem's quads, on every core for a large mesh, keeping only the mesh-made pairs as it goes: cheap enough to
 // run after every build.
 std::vector<QuadPairHit> meshMadePairsOf(const TreeMesh& tree, const Skeleton& skeleton, const std::vector<bool>& stems);
+// The mesh-made pairs between one of `quads` (sorted; a few: the faces that closed twigs' ports) and any other
+// quad, classified as above, sorted.
+std::vector<QuadPairHit> meshMadePairsWith(const TreeMesh& tree, const Skeleton& skeleton, const std::vector<std::uint32_t>& quads);
 // The number the mesher must bring to 0: pairs of quads that intersect where the skeleton does not.
 std::size_t meshMadeIntersections(const TreeMesh& tree, const Skeleton& skeleton);
 
