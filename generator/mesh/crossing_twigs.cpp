@@ -18,7 +18,10 @@ namespace {
 constexpr int kPasses = 2;
 // Stems from level 2 on can be twigs; a level-1 stem only when at most this share of its parent's radius thick
 // (shave-grass's whorls, palm fronds): all trees at seeds 1-3 502 -> 319 pairs for 0.3 % of their quads (the fan
-// palm file 5.4 %, shave-grass 4.9 %); at half the radius 254, but the willow preset lost 16 % of its quads.
+// palm file 5.4 %, shave-grass 4.9 %); at half the radius 254, but the willow preset lost 16 % of its quads. The
+// parent's radius at its base, not where the twig attaches: a twig high on a tapering stem is as thick as the stem
+// there and still a twig of the tree (all trees 276 -> 258 pairs, 0.04 % of their quads; the ABOP plants
+// 231 -> 120, 0.3 %).
 constexpr int kFromLevel = 2;
 constexpr double kThinLevelOne = 0.25;
 // A branch bearing only twigs goes with them (all trees at seeds 1-3: 562 -> 502 pairs, 0.24 % of the quads);
@@ -63,9 +66,9 @@ std::vector<bool> twigsOf(const TreeMesh& tree, const Skeleton& skeleton, const 
   for (std::size_t i = 0; i < n; ++i) {
     const SkeletonStem& r = skeleton.stems[static_cast<std::size_t>(root[i])];
     const auto ri = static_cast<std::size_t>(root[i]);
-    const bool thin = r.level == kFromLevel - 1 && r.attachNode >= 0 &&
-                      r.startRadius <= kThinLevelOne * skeleton.nodes[static_cast<std::size_t>(r.attachNode)].radius;
-    twig[i] = meshed[ri] && height[ri] <= maxHeight && r.parentStem >= 0 && (r.level >= kFromLevel || thin);
+    if (r.parentStem < 0) continue;  // a trunk is never a twig
+    const bool thin = r.level == kFromLevel - 1 && r.startRadius <= kThinLevelOne * skeleton.stems[static_cast<std::size_t>(r.parentStem)].startRadius;
+    twig[i] = meshed[ri] && height[ri] <= maxHeight && (r.level >= kFromLevel || thin);
   }
   return twig;
 }
