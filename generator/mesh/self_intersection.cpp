@@ -106,13 +106,23 @@ int collarParent(const Skeleton& skeleton, int stem) {
   return s.cloneOf >= 0 ? s.cloneOf : s.parentStem;
 }
 
-// x crossing the collar of a child of p is x crossing p only if x is not p, nor p's parent or clone. (x may be
-// another child of p: its capsules start where it leaves p's wood, so its own joint never counts as crossing p.)
+// x crossing the collar of a child of p is x crossing p only if x is not p, nor p's parent or clone (those count
+// as kin, below). (x may be another child of p: its capsules start where it leaves p's wood, so its own joint never
+// counts as crossing p.)
 bool unrelatedTo(const Skeleton& skeleton, int x, int p) {
   if (x == p || x < 0) return false;
   const SkeletonStem& sx = skeleton.stems[static_cast<std::size_t>(x)];
   if (sx.parentStem == p && sx.cloneOf < 0) return true;
   return relationOf(skeleton, x, p) == StemRelation::Other && collarParent(skeleton, x) != p;
+}
+
+// x and p are clones of one split, or one is the other's clone: past where each has left the other's wood, two
+// clones grown into each other cross as any two stems do (the willows' trunk clones, split at a few degrees).
+bool cloneKin(const Skeleton& skeleton, int x, int p) {
+  if (x < 0 || p < 0 || x == p) return false;
+  const StemRelation r = relationOf(skeleton, x, p);
+  const int sx = skeleton.stems[static_cast<std::size_t>(x)].cloneOf, sp = skeleton.stems[static_cast<std::size_t>(p)].cloneOf;
+  return r == StemRelation::CloneSource || (r == StemRelation::Siblings && sx >= 0 && sx == sp);
 }
 
 // Sorts pairs into skeleton-made and mesh-made, building a stem's capsules the first time a pair needs them: a
@@ -136,12 +146,14 @@ class PairClassifier {
     if (candidate && !meets) {
       for (const auto& [x, fx, y] : {std::tuple{h.stemA, h.a, h.stemB}, std::tuple{h.stemB, h.b, h.stemA}}) {
         const int py = collarParent(skeleton_, y);
-        if (py < 0 || unrelatedTo(skeleton_, x, py) == false) continue;
-        const std::vector<Capsule>& cx = capsules(x, py, x);
-        const std::vector<Capsule>& cp = capsules(x, py, py);
+        if (py < 0) continue;
+        const bool kin = cloneKin(skeleton_, x, py);
+        if (!kin && !unrelatedTo(skeleton_, x, py)) continue;
+        const std::vector<Capsule>& cx = kin ? kinCapsules(x, py) : capsules(x, py, x);
+        const std::vector<Capsule>& cp = kin ? kinCapsules(py, x) : capsules(x, py, py);
         const double reachX = stemReach(cx, h.point, builtRadius(tree_.mesh, fx));
         const double reachP = stemReach(cp, h.point);
-        if (woodMeets([&, xs = x]() -> const auto& { return overlaps(xs, py); }, h.point, reachX, reachP)) meets = true;
+        if (woodMeets([&, xs = x]() -> const auto& { return kin ? kinOverlaps(xs, py) : overlaps(xs, py); }, h.point, reachX, reachP)) meets = true;
       }
     }
     h.origin = meets ? PairOrigin::Skeleton : PairOrigin::Mesh;
@@ -155,6 +167,23 @@ class PairClassifier {
     const auto it = overlaps_.find(key);
     if (it != overlaps_.end()) return it->second;
     return overlaps_.emplace(key, woodOverlaps(capsules(x, y, x), capsules(x, y, y), kCageReach)).first->second;
+  }
+
+  // Two clone kin's capsules, each from where it has left the other's wood, and where they overlap, once per pair.
+  static std::uint64_t keyOf(int x, int y) {
+    return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(x)) << 32) | static_cast<std::uint32_t>(y);
+  }
+  const std::vector<Capsule>& kinCapsules(int of, int other) {
+    const auto key = keyOf(of, other);
+    const auto it = kin_.find(key);
+    if (it != kin_.end()) return it->second;
+    return kin_.emplace(key, capsulesOutOf(skeleton_, of, other)).first->second;
+  }
+  const std::vector<WoodOverlap>& kinOverlaps(int x, int y) {
+    const auto key = keyOf(std::min(x, y), std::max(x, y));
+    const auto it = kinOverlaps_.find(key);
+    if (it != kinOverlaps_.end()) return it->second;
+    return kinOverlaps_.emplace(key, woodOverlaps(kinCapsules(x, y), kinCapsules(y, x), kCageReach)).first->second;
   }
 
   // The capsules of `of` (x or y) as seen against the other: a child's neck overlaps its own parent by
@@ -171,7 +200,8 @@ class PairClassifier {
   const TreeMesh& tree_;
   const Skeleton& skeleton_;
   std::vector<std::optional<std::vector<Capsule>>> necks_, wood_;
-  std::unordered_map<std::uint64_t, std::vector<WoodOverlap>> overlaps_;
+  std::unordered_map<std::uint64_t, std::vector<WoodOverlap>> overlaps_, kinOverlaps_;
+  std::unordered_map<std::uint64_t, std::vector<Capsule>> kin_;
 };
 
 // Per quad, whether one of its corners lies on a cross section of its own stem marked in `ringOf` (per vertex, the

@@ -222,4 +222,12 @@ bool shallowJoint(const Skeleton& skeleton, int stem) {
                                                                               // R / tan(angle) > 1.5 R along
 }
 
+std::vector<Capsule> capsulesOutOf(const Skeleton& skeleton, int stem, int other) {
+  std::vector<Capsule> out = edgeChain(skeleton, static_cast<std::size_t>(stem));
+  const double inside = lengthInside(out, edgeChain(skeleton, static_cast<std::size_t>(other)));
+  if (!std::isfinite(inside)) return {};
+  cutStart(out, inside);
+  return out;
+}
+
 }  // namespace arbor

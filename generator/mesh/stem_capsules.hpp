@@ -36,6 +36,10 @@ std::vector<std::vector<Capsule>> stemCapsules(const Skeleton& skeleton, StemSta
 // The same for one stem (what a check of a few stems' quads needs, without the whole tree's).
 std::vector<Capsule> stemCapsulesOf(const Skeleton& skeleton, int stem, StemStart start = StemStart::ClearOfParent);
 
+// A stem's capsules from where its axis leaves another stem's wood on (none if it never does): two clones of one
+// split as seen against each other, their overlap at the split left out.
+std::vector<Capsule> capsulesOutOf(const Skeleton& skeleton, int stem, int other);
+
 // Distance from x to the capsule's axis over its radius there (at least minRadius: the mesh keeps tips
 // thicker than the skeleton's, which tapers to 0): <= 1 inside; infinite before a flat start.
 double capsuleReach(const Capsule& c, const Vec3& x, double minRadius = 0.0);
