@@ -662,17 +662,31 @@ TEST_CASE("self-intersections of every preset and Arbaro file at seeds 1-3 (meas
   }
 }
 
+namespace {
+
+// An ABOP plant at seed 1, meshed with its crossing twigs left in and taken out.
+struct TakeOut {
+  Skeleton skeleton;
+  TreeMesh before, after;
+};
+TakeOut plantTakeOut(const std::string& name) {
+  GrowthOptions o;
+  o.seed = 1;
+  TakeOut t{loadTreeSource(std::string(ARBOR_ASSET_DIR) + "/lsystems/" + name + ".lsys").grow(o), {}, {}};
+  MeshOptions keep;
+  keep.fakeCrossingTwigs = false;
+  t.before = buildTreeMesh(t.skeleton, keep);
+  t.after = buildTreeMesh(t.skeleton);
+  return t;
+}
+
+}  // namespace
+
 TEST_CASE("a level-1 twig high on a tapering stem is thin by that stem's base: a crossing one is a fake branch", "[mesh][self-intersection]") {
   // ABOP's fig. 1.31a: side branches near the top of a main axis that tapers to a third of its base radius. Mesh-made
   // pairs at seed 1 when written: 186 without the take-out, 26 with a quarter of the parent's radius where the twig
   // attaches as the measure, 5 with a quarter of its radius at its base.
-  const TreeSource plant = loadTreeSource(std::string(ARBOR_ASSET_DIR) + "/lsystems/fig-1-31a.lsys");
-  GrowthOptions o;
-  o.seed = 1;
-  const Skeleton skeleton = plant.grow(o);
-  MeshOptions keep;
-  keep.fakeCrossingTwigs = false;
-  const TreeMesh before = buildTreeMesh(skeleton, keep), after = buildTreeMesh(skeleton);
+  const auto [skeleton, before, after] = plantTakeOut("fig-1-31a");
   CHECK(checkSelfIntersections(after, skeleton).meshMade * 10 < checkSelfIntersections(before, skeleton).meshMade);
   const std::set<int> was(before.fakedStems.begin(), before.fakedStems.end());
   std::size_t thinByBase = 0;  // level-1 twigs taken out that are thicker than a quarter of the radius where they attach
@@ -689,13 +703,7 @@ TEST_CASE("a level-1 twig high on a tapering stem is thin by that stem's base: a
 TEST_CASE("a twig crossing the tip of a branch that bears children is a fake branch", "[mesh][self-intersection]") {
   // ABOP's fig. 1.24c: its branches' tips reach past their skeletons' ends among the twigs beside them. Mesh-made
   // pairs at seed 1 when written: 152 without the take-out, 52 with it before tips were searched, 8 with them.
-  const TreeSource plant = loadTreeSource(std::string(ARBOR_ASSET_DIR) + "/lsystems/fig-1-24c.lsys");
-  GrowthOptions o;
-  o.seed = 1;
-  const Skeleton skeleton = plant.grow(o);
-  MeshOptions keep;
-  keep.fakeCrossingTwigs = false;
-  const TreeMesh before = buildTreeMesh(skeleton, keep), after = buildTreeMesh(skeleton);
+  const auto [skeleton, before, after] = plantTakeOut("fig-1-24c");
   const std::size_t meshMadeBefore = checkSelfIntersections(before, skeleton).meshMade;
   const std::size_t meshMadeAfter = checkSelfIntersections(after, skeleton).meshMade;
   CHECK(meshMadeAfter * 10 < meshMadeBefore);
