@@ -11,9 +11,9 @@
 namespace arbor {
 
 // A twig here: a meshed stem two or more levels from its trunk, with the clones it splits into, none of which bears
-// a meshed child; or such a branch bearing only twigs, which go with it; or a level-1 one at most a quarter of its
-// parent's radius at the parent's base thick (a palm's frond, a horsetail's whorl branch: the fake branch drawn
-// for it looks the same from a few metres). Takes out, in up to two passes, the twig of each mesh-made pair with a
+// a meshed child; or such a branch bearing only twigs, which go with it; or a level-1 one whose radius is at most a
+// quarter of its parent's base radius (a palm's frond, a horsetail's whorl branch: the fake branch drawn for it
+// looks the same from a few metres). Takes out, in up to two passes, the twig of each mesh-made pair with a
 // quad in either stem's neck or first band, or on the tip of another stem bearing children (of two twigs, the one
 // whose quad lies farther off its skeleton; a twig's neck through its own tube counts), adds its stems to
 // tree.fakedStems and returns how many twigs were taken out. A twig whose quads do not meet the rest of the mesh in

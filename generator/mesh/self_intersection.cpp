@@ -125,6 +125,11 @@ bool cloneKin(const Skeleton& skeleton, int x, int p) {
   return r == StemRelation::CloneSource || (r == StemRelation::Siblings && sx >= 0 && sx == sp);
 }
 
+// A key for a pair of stems (x, y in that order) in the classifier's caches.
+std::uint64_t keyOf(int x, int y) {
+  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(x)) << 32) | static_cast<std::uint32_t>(y);
+}
+
 // Sorts pairs into skeleton-made and mesh-made, building a stem's capsules the first time a pair needs them: a
 // check of a few stems' quads then costs what those stems do, not the whole tree's.
 class PairClassifier {
@@ -163,16 +168,13 @@ class PairClassifier {
   // Where the wood of stems x and y overlaps (their capsules as seen against each other), once per pair: a
   // crossing of two branches makes many pairs of quads.
   const std::vector<WoodOverlap>& overlaps(int x, int y) {
-    const auto key = (static_cast<std::uint64_t>(static_cast<std::uint32_t>(std::min(x, y))) << 32) | static_cast<std::uint32_t>(std::max(x, y));
+    const auto key = keyOf(std::min(x, y), std::max(x, y));
     const auto it = overlaps_.find(key);
     if (it != overlaps_.end()) return it->second;
     return overlaps_.emplace(key, woodOverlaps(capsules(x, y, x), capsules(x, y, y), kCageReach)).first->second;
   }
 
   // Two clone kin's capsules, each from where it has left the other's wood, and where they overlap, once per pair.
-  static std::uint64_t keyOf(int x, int y) {
-    return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(x)) << 32) | static_cast<std::uint32_t>(y);
-  }
   const std::vector<Capsule>& kinCapsules(int of, int other) {
     const auto key = keyOf(of, other);
     const auto it = kin_.find(key);
@@ -203,6 +205,18 @@ class PairClassifier {
   std::unordered_map<std::uint64_t, std::vector<WoodOverlap>> overlaps_, kinOverlaps_;
   std::unordered_map<std::uint64_t, std::vector<Capsule>> kin_;
 };
+
+// Tests quads f and g (with their corners) and keeps the pair in `found` only when they meet and the mesh made it;
+// the lower index goes first, as every search reports pairs.
+void keepIfMeshMade(const QuadCorners& cf, const QuadCorners& cg, std::uint32_t f, std::uint32_t g, PairClassifier& classifier,
+                    std::vector<QuadPairHit>& found) {
+  const std::size_t before = found.size();
+  if (f < g) testPair(cf, cg, f, g, found);
+  else testPair(cg, cf, g, f, found);
+  if (found.size() == before) return;
+  classifier.classify(found.back());
+  if (found.back().origin != PairOrigin::Mesh) found.pop_back();
+}
 
 // Per quad, whether one of its corners lies on a cross section of its own stem marked in `ringOf` (per vertex, the
 // stem whose marked cross section it is on; -1 for none).
@@ -445,12 +459,7 @@ std::vector<QuadPairHit> meshMadePairsOf(const TreeMesh& tree, const Skeleton& s
         const std::uint32_t b = near[k];
         if (i == j && b <= a) continue;
         if (!quadBoxes[a].overlaps(quadBoxes[b]) || quadContact(ca.index, nearCorners[k].index) != QuadContact::Apart) continue;
-        const std::size_t before = found.size();
-        if (a < b) testPair(ca, nearCorners[k], a, b, found);
-        else testPair(nearCorners[k], ca, b, a, found);
-        if (found.size() == before) continue;
-        classifier.classify(found.back());
-        if (found.back().origin != PairOrigin::Mesh) found.pop_back();
+        keepIfMeshMade(ca, nearCorners[k], a, b, classifier, found);
       }
     }
   };
@@ -481,11 +490,7 @@ std::vector<QuadPairHit> meshMadePairsWith(const TreeMesh& tree, const Skeleton&
       // A pair of two listed quads once.
       if (f == g || quadContact(mesh.quads[f], mesh.quads[g]) != QuadContact::Apart) return;
       if (std::binary_search(quads.begin(), quads.end(), g) && g < f) return;
-      const std::size_t before = found.size();
-      testPair(mesh, std::min(f, g), std::max(f, g), found);
-      if (found.size() == before) return;
-      classifier.classify(found.back());
-      if (found.back().origin != PairOrigin::Mesh) found.pop_back();
+      keepIfMeshMade(cornersOf(mesh, f), cornersOf(mesh, g), f, g, classifier, found);
     });
   }
   sortHits(found);

@@ -60,11 +60,11 @@ SelfIntersectionReport checkSelfIntersections(const TreeMesh& tree, const Skelet
 
 // The mesh-made pairs between a quad of a stem flagged in `stems` (one flag per skeleton stem) and another quad
 // (of another stem, or of its own: a neck through its own tube), where one of the two lies in its stem's neck or
-// first band, or on the tip (last band and cap) of a stem bearing children, classified as above, sorted. Left out: pairs of a clone with its source (which it leaves through its
-// end), or sharing a corner (the quads around every port: most of the work), and necks crowded by other stems (a
-// thicket the skeleton made, where the search would grow with the square of the stems). Over a BVH of runs of
-// each stem's quads, on every core for a large mesh, keeping only the mesh-made pairs as it goes: cheap enough to
-// run after every build.
+// first band, or on the tip (last band and cap) of a stem bearing children, classified as above, sorted. Left
+// out: pairs of a clone with its source (which it leaves through its end), or sharing a corner (the quads around
+// every port: most of the work), and necks crowded by other stems (a thicket the skeleton made, where the search
+// would grow with the square of the stems). Over a BVH of runs of each stem's quads, on every core for a large
+// mesh, keeping only the mesh-made pairs as it goes: cheap enough to run after every build.
 std::vector<QuadPairHit> meshMadePairsOf(const TreeMesh& tree, const Skeleton& skeleton, const std::vector<bool>& stems);
 // The mesh-made pairs between one of `quads` (sorted; a few: the faces that closed twigs' ports) and any other
 // quad, classified as above, sorted.
