@@ -1854,7 +1854,23 @@ class Builder {
       level = std::clamp(level * span / std::max(r, 1e-9), lowest, highest);
     }
     if (spreadAt(level) < 0.0) return false;
-    const HubLayout layout = layOutHub(wanted);
+    HubLayout layout = layOutHub(wanted);
+    // A cell's port centre, where a neck from it starts.
+    auto portCenter = [&](const std::array<int, 2>& c) {
+      return origin + frame.N * (-half + (c[0] + 0.5) * cell) + frame.B * (-half + (c[1] + 0.5) * cell) + kUp * height;
+    };
+    std::vector<double> reach(trunks.size());
+    std::vector<std::vector<Vec3>> tube(trunks.size());
+    for (std::size_t t = 0; t < trunks.size(); ++t) {
+      reach[t] = opt_.limitCompensation * std::max(rho, polys[t].radius(arcs[t]));
+      for (int k = 0; k <= 4; ++k) tube[t].push_back(polys[t].position(std::min(polys[t].length(), arcs[t] + 8.0 * k * reach[t])));
+    }
+    untangleHub(
+        layout,
+        [&](std::size_t t, const std::array<int, 2>& c) {
+          return hubNeck(portCenter(c), kUp, polys[t].position(arcs[t]), polys[t].direction(arcs[t]), std::max(rho, polys[t].radius(arcs[t])));
+        },
+        reach, tube);
 
     // The top grid, the base (its rim only where the base is left open) and the sides between them.
     const double texTop = barkTextureAdvance(height, rho);
@@ -1930,26 +1946,16 @@ class Builder {
     const double portRadius = meanCornerDistance(start.port, last.center) / opt_.limitCompensation;
     addPortUvw(start.port, last.tex);
     const double s = start.tubeAt;
-    const Vec3 from = last.center, to = poly.position(s);
-    const double length = glm::distance(from, to), rc = poly.radius(s);
-    const Vec3 t0 = last.frame.T * length, t1 = poly.direction(s) * length;
-    auto at = [&](double f) {  // Hermite basis
-      const double f2 = f * f, f3 = f2 * f;
-      return from * (2 * f3 - 3 * f2 + 1) + t0 * (f3 - 2 * f2 + f) + to * (-2 * f3 + 3 * f2) + t1 * (f3 - f2);
-    };
-    auto tangent = [&](double f) {
-      const double f2 = f * f;
-      return directionOr(from * (6 * f2 - 6 * f) + t0 * (3 * f2 - 4 * f + 1) + to * (-6 * f2 + 6 * f) + t1 * (3 * f2 - 2 * f), last.frame.T);
-    };
-    const int steps = std::clamp(static_cast<int>(length / (16.0 * std::max(rc, portRadius))), 1, 16);
+    const double rc = poly.radius(s);
+    const HubNeck neck = hubNeck(last.center, last.frame.T, poly.position(s), poly.direction(s), std::max(rc, portRadius));
     RingFrame frame = last.frame;
-    for (int k = 1; k <= steps; ++k) {
-      const double f = static_cast<double>(k) / steps;
-      const Vec3 c = at(f);
+    for (int k = 1; k <= neck.steps; ++k) {
+      const double f = static_cast<double>(k) / neck.steps;
+      const Vec3 c = neck.at(f);
       const double r = portRadius + (rc - portRadius) * f;
-      frame = transportFrame(frame, k < steps ? tangent(f) : poly.direction(s));
+      frame = transportFrame(frame, k < neck.steps ? directionOr(neck.tangent(f), last.frame.T) : poly.direction(s));
       const double tex = last.tex + barkTextureAdvance(glm::distance(c, last.center), r);
-      const Ring next = emitRing(stem, c, frame, r, tex, k < steps ? -1.0 : s);
+      const Ring next = emitRing(stem, c, frame, r, tex, k < neck.steps ? -1.0 : s);
       band(last, next);
       last = next;
     }
