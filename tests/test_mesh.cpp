@@ -9,6 +9,7 @@
 #include "common/input_error.hpp"
 #include "growth/weber_penn/weber_penn.hpp"
 #include "mesh/cross_section.hpp"
+#include "mesh/face_grid.hpp"
 #include "mesh/hub_layout.hpp"
 #include "mesh/impostor_segments.hpp"
 #include "mesh/mesh_checks.hpp"
@@ -390,6 +391,23 @@ TEST_CASE("a wide hub gives each trunk its own port cell, keeping the trunks' or
       }
     }
   }
+}
+
+TEST_CASE("a face grid finds a face far larger than the rest from anywhere under it", "[mesh]") {
+  // Three hundred small faces set the cell size; one face spans thousands of cells (a wide hub's top).
+  std::vector<Box> boxes;
+  for (int i = 0; i < 300; ++i) boxes.push_back(Box{Vec3(i * 0.01, 0, 0), Vec3(i * 0.01 + 0.005, 0.005, 0.005)});
+  boxes.push_back(Box{Vec3(-10, -10, -1), Vec3(10, 10, 0.001)});
+  FaceGrid grid;
+  grid.build(boxes);
+  for (const Vec3& p : {Vec3(-9.5, -9.5, 0), Vec3(0.5, 0.5, 0), Vec3(9.5, 9.5, 0), Vec3(1.0, 0.001, 0.001)}) {
+    INFO(p.x << ", " << p.y);
+    const std::vector<std::uint32_t>& found = grid.candidates(Box{p, p + Vec3(0.001)});
+    CHECK(std::count(found.begin(), found.end(), 300u) == 1);
+    CHECK(std::is_sorted(found.begin(), found.end()));
+  }
+  const std::vector<std::uint32_t>& some = grid.candidates(Box{Vec3(0.1, 0, 0), Vec3(0.12, 0.001, 0.001)});
+  CHECK(some == std::vector<std::uint32_t>{10, 11, 12, 300});  // 12 touches the query at x = 0.12
 }
 
 TEST_CASE("two necks from a hub that would cross are given each other's port cells, or free ones", "[mesh][trunks]") {

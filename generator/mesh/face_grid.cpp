@@ -8,6 +8,9 @@ namespace arbor {
 namespace {
 constexpr long kMaxCellsPerAxis = 64;      // a huge query box scans its faces' cells at most this far
 constexpr std::size_t kGridFrom = 256;     // fewer faces than this: a linear scan beats building cells
+// A face spanning more cells than this is looked at by every query instead of filed in each cell (a hub under
+// 1,000 trunks filed its wide faces in 65^3 cells each: 5.8 GB).
+constexpr long kMaxCellsPerFace = 512;
 }
 
 std::uint64_t FaceGrid::key(long x, long y, long z) const {
@@ -20,6 +23,7 @@ long FaceGrid::cell(double v) const { return static_cast<long>(std::floor(v / ce
 void FaceGrid::build(std::vector<Box> boxes) {
   boxes_ = std::move(boxes);
   cells_.clear();
+  large_.clear();
   stamp_.assign(boxes_.size(), 0);
   query_ = 0;
   if (boxes_.size() < kGridFrom) return;
@@ -29,8 +33,12 @@ void FaceGrid::build(std::vector<Box> boxes) {
   for (std::uint32_t i = 0; i < boxes_.size(); ++i) {
     const Box& b = boxes_[i];
     const long x0 = cell(b.lo.x), y0 = cell(b.lo.y), z0 = cell(b.lo.z);
-    const long x1 = std::min(cell(b.hi.x), x0 + kMaxCellsPerAxis), y1 = std::min(cell(b.hi.y), y0 + kMaxCellsPerAxis),
-               z1 = std::min(cell(b.hi.z), z0 + kMaxCellsPerAxis);
+    const long x1 = cell(b.hi.x), y1 = cell(b.hi.y), z1 = cell(b.hi.z);
+    if (x1 - x0 >= kMaxCellsPerFace || y1 - y0 >= kMaxCellsPerFace || z1 - z0 >= kMaxCellsPerFace ||
+        (x1 - x0 + 1) * (y1 - y0 + 1) * (z1 - z0 + 1) > kMaxCellsPerFace) {
+      large_.push_back(i);
+      continue;
+    }
     for (long x = x0; x <= x1; ++x)
       for (long y = y0; y <= y1; ++y)
         for (long z = z0; z <= z1; ++z) cells_[key(x, y, z)].push_back(i);
@@ -47,6 +55,10 @@ const std::vector<std::uint32_t>& FaceGrid::candidates(const Box& q) {
     for (std::uint32_t i = 0; i < boxes_.size(); ++i)
       if (q.overlaps(boxes_[i])) found_.push_back(i);
     return found_;
+  }
+  for (std::uint32_t i : large_) {
+    stamp_[i] = query_;
+    if (q.overlaps(boxes_[i])) found_.push_back(i);
   }
   for (long x = x0; x <= x1; ++x) {
     for (long y = y0; y <= y1; ++y) {

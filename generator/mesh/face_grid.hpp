@@ -41,6 +41,7 @@ class FaceGrid {
   std::vector<Box> boxes_;
   double cellSize_ = 1.0;
   std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> cells_;
+  std::vector<std::uint32_t> large_;  // faces too large to file in cells: every query looks at them
   std::vector<std::uint32_t> stamp_, found_;
   std::uint32_t query_ = 0;
 };
