@@ -267,6 +267,31 @@ TEST_CASE("a root with several children becomes a hub of trunks", "[graph]") {
   CHECK(r.eulerCharacteristic == 2);
 }
 
+TEST_CASE("a tuft of a thousand stalks from one root stands on a wide hub, one closed piece", "[graph][trunks]") {
+  // Short stalks on a sunflower spiral: the wide hub's first level lay past half their length, and the box hub's
+  // sub-boxes shrank to nothing (a non-finite vertex after 30 s and 5.8 GB in the parent's face grid).
+  BranchGraph g;
+  g.nodes.push_back(at(0, 0, 0, -1));
+  for (int i = 0; i < 1000; ++i) {
+    const double r = 0.005 * std::sqrt(i + 0.5), a = 2.39996 * i;
+    int parent = 0;
+    for (int k = 1; k <= 5; ++k) {
+      g.nodes.push_back(at(r * std::cos(a) * k, r * std::sin(a) * k, 0.1 * k, parent, 0.003));
+      parent = static_cast<int>(g.nodes.size()) - 1;
+    }
+  }
+  const Skeleton s = graphToSkeleton(g);
+  REQUIRE(s.nodes[0].kind == NodeKind::Root);
+  const TreeMesh tree = buildTreeMesh(s);
+  const MeshTopologyReport r = checkTopology(tree.mesh);
+  CHECK(r.boundaryEdges == 0);
+  CHECK(r.nonManifoldEdges == 0);
+  CHECK(r.components == 1);
+  CHECK(r.eulerCharacteristic == 2);
+  REQUIRE(!tree.joints.empty());
+  CHECK(tree.joints.front().childStems.size() == 1000);  // one hub, every stalk on it
+}
+
 TEST_CASE("a single trunk stands on the ground unless it branches within a root radius of it", "[graph]") {
   // A trunk of radius 0.1 (a given radius) branching at height h: a slab reaches at most one parent radius below
   // its branch point, so above that the trunk needs no hub (whose box and neck moved ABOP 1.24c's lowest branches

@@ -1847,7 +1847,7 @@ class Builder {
       return hubSpread(wanted);
     };
     const double lowest = height + 4.0 * rho, highest = std::max(lowest, 0.25 * shortest);
-    double level = height + span;
+    double level = std::clamp(height + span, lowest, highest);
     for (int k = 0; k < 4; ++k) {
       const double r = spreadAt(level);
       if (r < 0.0) return false;
