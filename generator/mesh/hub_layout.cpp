@@ -149,7 +149,7 @@ void untangleHub(HubLayout& layout, const NeckFromCell& neck, const std::vector<
   // How much closer trunk a's neck (centre line na) and trunk b's (nb) come to each other or to the other's tube than
   // their surfaces' reach allows, or than the two tubes come (where the skeletons overlap past the necks, the necks
   // closing in on them is the skeletons' doing).
-  std::size_t measured = 0;  // cuts worked out, against kBudget
+  std::size_t measured = 0;  // cuts worked out, against the budget below
   auto cutDepth = [&](std::size_t a, const CentreLine& na, std::size_t b, const CentreLine& nb) {
     ++measured;
     const double r = std::min(reach[a] + reach[b], tubeDistance[a * n + b]);

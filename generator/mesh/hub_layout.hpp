@@ -1,7 +1,8 @@
 #pragma once
 // Ports for many trunks on one hub (a grass's tuft): the hub's top is a grid of cells, and each trunk leaves a port
 // cell laid out as its axis lies where the necks meet the skeletons, in the same order, so that the necks from hub
-// to skeleton run side by side as the skeleton's stems do, instead of crossing from sub-boxes crowded at the centre.
+// to skeleton run side by side as the skeleton's stems do, instead of crossing from sub-boxes crowded at the centre;
+// then trunks whose necks would still cut each other trade cells (untangleHub).
 #include <array>
 #include <functional>
 #include <vector>
@@ -40,13 +41,14 @@ HubNeck hubNeck(const Vec3& from, const Vec3& normal, const Vec3& to, const Vec3
 // The neck trunk t would get from cell (i, j).
 using NeckFromCell = std::function<HubNeck(std::size_t t, const std::array<int, 2>& cell)>;
 
-// Trunks swapped between port cells, or moved to free ones, while that lowers how deep their necks' bands cut each
+// Trunks swapped between port cells, or moved to free ones, while that lowers how far their necks cut into each
 // other: two skeletons close where their necks meet them, reached from ports on the wrong sides of each other, made
 // the necks cross just below (the grid keeps the axes' order by columns, then rows, not their nearest pairs).
 // reach[t]: how far trunk t's surface stands from its centre line at most; tube[t]: its skeleton's first stretch
-// past the neck (a neck crossing the tube beside it counts too). Each pass moves every trunk whose neck comes too
-// close to another's to the port cell within two slots that lowers the total most (wheat, barley and rush at seeds
-// 1-3: mesh-made pairs between stalks 54 -> 21).
+// past the neck (a neck crossing the tube beside it counts too; two necks closing in on tubes that overlap anyway
+// do not). Each pass moves every trunk whose neck comes too close to another to the port cell within two slots
+// that lowers the total most, until none does or two million cuts have been weighed (wheat, barley and rush at
+// seeds 1-3: mesh-made pairs between stalks 54 -> 21).
 void untangleHub(HubLayout& layout, const NeckFromCell& neck, const std::vector<double>& reach, const std::vector<std::vector<Vec3>>& tube);
 
 }  // namespace arbor
