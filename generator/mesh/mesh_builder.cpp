@@ -66,6 +66,10 @@ constexpr double kSlabTurn = 0.866;
 // beside it kept their clearance.
 constexpr double kTopTail = 1.5;
 constexpr double kTopAligned = 0.9;
+// Trunks from one root that always stand on a wide hub, whatever their axes (a tuft of 1,000 stalks, one lying
+// flat, took the box hub 250 sub-boxes deep to a non-finite vertex; 800 upright ones meshed there).
+constexpr std::size_t kBoxHubMost = 64;
+
 // Passes of faking the twigs an earlier pass left past kFarChild.
 constexpr int kFarTwigPasses = 3;
 // A twig (level 2 on) passing within this many radii of a neighbouring stem's axis at that stem's joint, plus its
@@ -1771,10 +1775,11 @@ class Builder {
   }
 
   // Several trunks meet in a root node: a capped hub whose top and sides they leave from. More than the box's
-  // top and four sides hold get a wide hub with a port for each (buildGridHub) where their axes allow one.
+  // top and four sides hold get a wide hub with a port for each (buildGridHub) where their axes allow one, and
+  // more than kBoxHubMost always do: the box hub's sub-boxes, four trunks a level, shrank to nothing under 1,000.
   void buildRoot(const std::vector<int>& trunks) {
     if (trunks.empty()) return;
-    if (trunks.size() > 5 && buildGridHub(trunks)) return;
+    if (trunks.size() > 5 && buildGridHub(trunks, trunks.size() > kBoxHubMost)) return;
     const double rho = widestStart(trunks);
     const Vec3 origin = sk_.nodes[0].world.position;
     const RingFrame frame = frameFromHint(kUp, Vec3(1, 0, 0));
@@ -1814,8 +1819,9 @@ class Builder {
 
   // Many trunks from one root (a grass's tuft): a flat hub whose top is a grid of cells, each trunk leaving its
   // own port cell, laid out as its axis lies where the necks meet the skeletons, its neck curving from there to
-  // its skeleton (leaveHub). False where a trunk's skeleton never rises that far (the box hub is built instead).
-  bool buildGridHub(const std::vector<int>& trunks) {
+  // its skeleton (leaveHub). False where a trunk's skeleton never rises that far (the box hub is built instead),
+  // unless `always`: then such a trunk's neck meets it half-way along.
+  bool buildGridHub(const std::vector<int>& trunks, bool always) {
     const double rho = widestStart(trunks);
     if (!(rho > 0.0)) return false;  // no width to lay cells out by
     const double cell = std::sqrt(2.0) * rho * opt_.limitCompensation;  // a port's corners where a trunk's ring's are
@@ -1840,7 +1846,10 @@ class Builder {
     auto spreadAt = [&](double level) {
       for (std::size_t i = 0; i < polys.size(); ++i) {
         arcs[i] = arcAtLevel(polys[i], origin, kUp, level);
-        if (arcs[i] < 0.0 || arcs[i] > 0.5 * polys[i].length()) return -1.0;
+        if (arcs[i] < 0.0 || arcs[i] > 0.5 * polys[i].length()) {
+          if (!always) return -1.0;
+          arcs[i] = 0.5 * polys[i].length();  // its neck meets it half-way, wherever that lies
+        }
         const Vec3 d = polys[i].position(arcs[i]) - origin;
         wanted[i] = {glm::dot(d, frame.N), glm::dot(d, frame.B)};
       }
