@@ -144,7 +144,7 @@ void untangleHub(HubLayout& layout, const NeckFromCell& neck, const std::vector<
   for (const auto& t : tubes) tube.emplace_back(t);
   std::vector<double> tubeDistance(n * n);
   for (std::size_t a = 0; a < n; ++a)
-    for (std::size_t b = 0; b < n; ++b) tubeDistance[a * n + b] = lineDistance(tube[a], tube[b], reach[a] + reach[b]);
+    for (std::size_t b = a; b < n; ++b) tubeDistance[a * n + b] = tubeDistance[b * n + a] = lineDistance(tube[a], tube[b], reach[a] + reach[b]);
   auto lineFrom = [&](std::size_t t, const std::array<int, 2>& cell) { return CentreLine(neckCentres(neck(t, cell))); };
   // How much closer trunk a's neck (centre line na) and trunk b's (nb) come to each other or to the other's tube than
   // their surfaces' reach allows, or than the two tubes come (where the skeletons overlap past the necks, the necks

@@ -1868,17 +1868,22 @@ class Builder {
     auto portCenter = [&](const std::array<int, 2>& c) {
       return origin + frame.N * (-half + (c[0] + 0.5) * cell) + frame.B * (-half + (c[1] + 0.5) * cell) + kUp * height;
     };
+    // Where each neck meets its skeleton (and how it arrives), read once: the search weighs thousands of necks.
+    struct NeckEnd {
+      Vec3 at{0.0}, direction{0.0};
+      double radius = 0;
+    };
+    std::vector<NeckEnd> ends(trunks.size());
     std::vector<double> reach(trunks.size());
     std::vector<std::vector<Vec3>> tube(trunks.size());
     for (std::size_t t = 0; t < trunks.size(); ++t) {
-      reach[t] = opt_.limitCompensation * std::max(rho, polys[t].radius(arcs[t]));
+      ends[t] = {polys[t].position(arcs[t]), polys[t].direction(arcs[t]), std::max(rho, polys[t].radius(arcs[t]))};
+      reach[t] = opt_.limitCompensation * ends[t].radius;
       for (int k = 0; k <= 4; ++k) tube[t].push_back(polys[t].position(std::min(polys[t].length(), arcs[t] + 8.0 * k * reach[t])));
     }
     untangleHub(
         layout,
-        [&](std::size_t t, const std::array<int, 2>& c) {
-          return hubNeck(portCenter(c), kUp, polys[t].position(arcs[t]), polys[t].direction(arcs[t]), std::max(rho, polys[t].radius(arcs[t])));
-        },
+        [&](std::size_t t, const std::array<int, 2>& c) { return hubNeck(portCenter(c), kUp, ends[t].at, ends[t].direction, ends[t].radius); },
         reach, tube);
 
     // The top grid, the base (its rim only where the base is left open) and the sides between them.
