@@ -130,6 +130,14 @@ std::uint64_t keyOf(int x, int y) {
   return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(x)) << 32) | static_cast<std::uint32_t>(y);
 }
 
+// The value cached under `key`, made the first time it is asked for.
+template <typename Map, typename Make>
+const typename Map::mapped_type& cached(Map& map, std::uint64_t key, Make&& make) {
+  const auto it = map.find(key);
+  if (it != map.end()) return it->second;
+  return map.emplace(key, make()).first->second;
+}
+
 // Sorts pairs into skeleton-made and mesh-made, building a stem's capsules the first time a pair needs them: a
 // check of a few stems' quads then costs what those stems do, not the whole tree's.
 class PairClassifier {
@@ -168,24 +176,15 @@ class PairClassifier {
   // Where the wood of stems x and y overlaps (their capsules as seen against each other), once per pair: a
   // crossing of two branches makes many pairs of quads.
   const std::vector<WoodOverlap>& overlaps(int x, int y) {
-    const auto key = keyOf(std::min(x, y), std::max(x, y));
-    const auto it = overlaps_.find(key);
-    if (it != overlaps_.end()) return it->second;
-    return overlaps_.emplace(key, woodOverlaps(capsules(x, y, x), capsules(x, y, y), kCageReach)).first->second;
+    return cached(overlaps_, keyOf(std::min(x, y), std::max(x, y)), [&] { return woodOverlaps(capsules(x, y, x), capsules(x, y, y), kCageReach); });
   }
 
   // Two clone kin's capsules, each from where it has left the other's wood, and where they overlap, once per pair.
   const std::vector<Capsule>& kinCapsules(int of, int other) {
-    const auto key = keyOf(of, other);
-    const auto it = kin_.find(key);
-    if (it != kin_.end()) return it->second;
-    return kin_.emplace(key, capsulesOutOf(skeleton_, of, other)).first->second;
+    return cached(kin_, keyOf(of, other), [&] { return capsulesOutOf(skeleton_, of, other); });
   }
   const std::vector<WoodOverlap>& kinOverlaps(int x, int y) {
-    const auto key = keyOf(std::min(x, y), std::max(x, y));
-    const auto it = kinOverlaps_.find(key);
-    if (it != kinOverlaps_.end()) return it->second;
-    return kinOverlaps_.emplace(key, woodOverlaps(kinCapsules(x, y), kinCapsules(y, x), kCageReach)).first->second;
+    return cached(kinOverlaps_, keyOf(std::min(x, y), std::max(x, y)), [&] { return woodOverlaps(kinCapsules(x, y), kinCapsules(y, x), kCageReach); });
   }
 
   // The capsules of `of` (x or y) as seen against the other: a child's neck overlaps its own parent by
