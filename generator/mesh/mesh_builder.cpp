@@ -38,6 +38,9 @@ constexpr std::uint32_t kUnmade = 0xfffffff0u;  // indices of corners not emitte
 // to its own children attached along it; on shorter ones they join the first slab (all trees at seeds 1-3, with
 // bowed necks: 8 radii 1,830 mesh-made pairs, 12 radii 1,889, 16 radii 1,884, 6 radii 1,903, 4 radii 2,577).
 constexpr double kNeckPortsFrom = 8.0;
+// A limb fused along its parent up to its split whose collar lies within this many of its radii of the split
+// builds the split's box on the collar itself; farther, on the skeleton moved clear of the parent (continueStem).
+constexpr double kFusedSplitNear = 4.0;
 // A child attached farther from the neck's line than this many of its parent's radii joins the first slab: the
 // neck is not where its skeleton is (a grass's stalks left their box hub along necks 400 radii long).
 constexpr double kNeckReach = 20.0;
@@ -1049,6 +1052,34 @@ class Builder {
         neck_ = NeckChildren{last.v, stem, std::move(neckNodes)};
       }
     }
+    // Its wood clears the parent only where it splits (a limb fused along its trunk, the willow file's): no tube, the
+    // clones and any children laid out there leave one box. Its first cross section stood on the skeleton beside
+    // the collar and the split slab squeezed after it folded against the neck, or ended a metre-long neck inside
+    // the parent's corners (the willow file at seeds 1-3: mesh-made pairs 59 -> 7, those against their trunks 52 -> 0).
+    if (split && start && !start->top && start->parentReach > 0.0 && st.cloneOf < 0 && tubeStart > sEnd - splitSlab.h) {
+      for (const Slab& slab : slabs) {
+        splitSlab.children.insert(splitSlab.children.end(), slab.children.begin(), slab.children.end());
+        splitSlab.need = std::max(splitSlab.need, slab.need);
+      }
+      // A collar near the split is the box's first cross section, the box along the collar (across the neck's end).
+      if (glm::distance(last.center, poly.position(sEnd)) <= kFusedSplitNear * poly.radius(0.0)) {
+        connectSplit(stem, poly, last, splitSlab, true);
+        return;
+      }
+      // Otherwise the box stands at the split, moved out from the parent's axis until its corners clear the parent's.
+      Vec3 p = poly.position(sEnd);
+      const Vec3 rel = p - start->branchPoint;
+      const Vec3 radial = rel - glm::dot(rel, start->parentAxis) * start->parentAxis;
+      const double r = std::max(poly.radius(sEnd), splitSlab.need);
+      const double clear = start->parentReach + r * opt_.limitCompensation;
+      const double off = glm::length(radial);
+      if (off < clear && off > 0.0) p += radial * ((clear - off) / off);
+      const RingFrame frame = transportFrame(last.frame, poly.endDirection());
+      const Ring lo = emitRing(stem, p, frame, r, last.tex + barkTextureAdvance(glm::distance(p, last.center), r), sEnd);
+      band(last, lo);
+      connectSplit(stem, poly, lo, splitSlab);
+      return;
+    }
     auto gap = [&](double at) { return gapAt(poly, at); };
 
     // Plain cross sections at the stem's own nodes outside slabs, then extra ones for even spacing.
@@ -1732,8 +1763,9 @@ class Builder {
 
   // An equal split (Nystad app. D): the clones leave through the top and the sides of a last slab;
   // with two clones the slab is shaped as a roof so that both leave at similar angles.
-  void connectSplit(int stem, const StemPolyline& poly, const Ring& lo, const Slab& slab) {
-    const Vec3 dir = poly.endDirection();
+  // alongLo: the slab runs along lo's own direction (a collar), not the stem's last edge.
+  void connectSplit(int stem, const StemPolyline& poly, const Ring& lo, const Slab& slab, bool alongLo = false) {
+    const Vec3 dir = alongLo ? lo.frame.T : poly.endDirection();
     const Vec3 p = lo.center + dir * (slab.hi - slab.lo);
     const RingFrame frame = transportFrame(lo.frame, dir);
     const Ring hi = emitRing(stem, p, frame, lo.radius, lo.tex + barkTextureAdvance(slab.hi - slab.lo, lo.radius));
