@@ -611,6 +611,33 @@ TEST_CASE("two trunk clones grown into each other: a limb leaving one through th
   CHECK(stemReach(five, four.front().a) == Approx(1.0).epsilon(0.02));
 }
 
+TEST_CASE("two limbs leaving two clones grown into each other cross as the skeleton makes them, where both clones' wood is", "[mesh][self-intersection]") {
+  // The willow preset at seed 1: limb 287 leaves clone 4 and limb 535 clone 5 where the two clones stand within
+  // each other's wood; 287's inset and 535's neck meet there in 3 pairs of quads, 3-4 radii off either limb's axis
+  // but inside both clones' wood (counted mesh-made before). Limb 411's neck against 116 (a limb of another trunk)
+  // stays the mesher's: 411's clone and 116's source do not overlap there.
+  const Skeleton skeleton = generateSkeleton(test::loadPreset("weeping-willow"), GrowthOptions{});
+  REQUIRE(skeleton.stems.size() > 535);
+  REQUIRE(skeleton.stems[287].parentStem == 4);
+  REQUIRE(skeleton.stems[535].parentStem == 5);
+  REQUIRE(skeleton.stems[4].cloneOf == skeleton.stems[5].cloneOf);
+  const TreeMesh tree = buildTreeMesh(skeleton);
+  std::size_t clones = 0, apart = 0;
+  for (const QuadPairHit& h : checkSelfIntersections(tree, skeleton).hits) {
+    const auto [lo, hi] = std::minmax(h.stemA, h.stemB);
+    if (lo == 287 && hi == 535) {
+      ++clones;
+      CHECK(h.origin == PairOrigin::Skeleton);
+    }
+    if (lo == 116 && hi == 411) {
+      ++apart;
+      CHECK(h.origin == PairOrigin::Mesh);
+    }
+  }
+  CHECK(clones > 0);
+  CHECK(apart > 0);
+}
+
 TEST_CASE("where two stems' wood overlaps: near the crossing of their capsules, never for stems apart", "[mesh][self-intersection]") {
   const std::vector<Capsule> a{Capsule{Vec3(-1, 0, 0), Vec3(1, 0, 0), 0.1, 0.1}};
   const std::vector<Capsule> b{Capsule{Vec3(0, -1, 0.05), Vec3(0, 1, 0.05), 0.1, 0.1}};   // crosses a at the origin

@@ -169,6 +169,17 @@ class PairClassifier {
         if (woodMeets([&, xs = x]() -> const auto& { return kin ? kinOverlaps(xs, py) : overlaps(xs, py); }, h.point, reachX, reachP)) meets = true;
       }
     }
+    // Both quads stand for their parents' surfaces where the two parents' wood overlaps (two clones grown into each
+    // other, two branches crossing where each bears a child): the children cross there as their parents do.
+    if (candidate && !meets) {
+      const int px = collarParent(skeleton_, h.stemA), py = collarParent(skeleton_, h.stemB);
+      const bool kin = px >= 0 && py >= 0 && cloneKin(skeleton_, px, py);
+      if (px >= 0 && py >= 0 && (kin || unrelatedTo(skeleton_, px, py) || unrelatedTo(skeleton_, py, px))) {
+        const std::vector<Capsule>& cx = kin ? kinCapsules(px, py) : capsules(px, py, px);
+        const std::vector<Capsule>& cy = kin ? kinCapsules(py, px) : capsules(px, py, py);
+        meets = woodMeets([&]() -> const auto& { return kin ? kinOverlaps(px, py) : overlaps(px, py); }, h.point, stemReach(cx, h.point), stemReach(cy, h.point));
+      }
+    }
     h.origin = meets ? PairOrigin::Skeleton : PairOrigin::Mesh;
   }
 
