@@ -614,12 +614,14 @@ TEST_CASE("a grass's stalks leave a wide hub and meet their skeletons at one lev
   if (files.empty()) return;  // arbaroSpeciesFiles said why
   // Mesh-made pairs between stalks (or a stalk and the hub), seeds 1-3: with the box hub and its sub-boxes 2,392
   // (wheat), 294 (barley), 307 (rush); with the grid hub's cells as laid out 44, 8 and 2; untangled (untangleHub)
-  // 18, 0 and 3.
+  // 18, 0 and 3; none once two near-parallel stalks' wood counted as overlapping along its length (it had counted
+  // only around one closest point, at the root: two stalks whose skeletons coincide for 6 cm made mesh-made pairs
+  // between their necks).
   struct Measured {
     const char* file;
     std::size_t pairs;
   };
-  for (const Measured& m : {Measured{"wheat", 18}, Measured{"barley", 0}, Measured{"rush", 3}}) {
+  for (const Measured& m : {Measured{"wheat", 0}, Measured{"barley", 0}, Measured{"rush", 0}}) {
     INFO(m.file);
     std::size_t pairs = 0;
     for (std::uint64_t seed = 1; seed <= 3; ++seed) {

@@ -647,6 +647,11 @@ TEST_CASE("where two stems' wood overlaps: near the crossing of their capsules, 
   CHECK(std::isinf(distanceToOverlap(a, c, Vec3(0, 0, 0.25), 1.0)));
   CHECK(std::isinf(distanceToOverlap(a, c, Vec3(0, 0, 0.25), 2.4)));   // 0.48 of reach at 2.4 times: still apart
   CHECK(distanceToOverlap(a, c, Vec3(0, 0, 0.25), 2.6) < 0.1);         // 0.52: the inflated wood touches
+  // Near-parallel axes overlap along their length (two grass stalks from one root), not only at one closest point.
+  const std::vector<Capsule> d{Capsule{Vec3(-1, 0, 0.05), Vec3(1, 0.1, 0.05), 0.1, 0.1}};  // 3 degrees off a, beside it
+  CHECK(distanceToOverlap(a, d, Vec3(-0.9, 0, 0.025), 1.0) < 0.1);
+  CHECK(distanceToOverlap(a, d, Vec3(0.9, 0.04, 0.025), 1.0) < 0.1);
+  CHECK(distanceToOverlap(a, d, Vec3(0.9, 0.04, 0.6), 1.0) > 2.5);  // beside the overlap, not on it
 }
 
 TEST_CASE("the BVH finds the same pairs as testing every pair, on a preset's mesh", "[mesh][self-intersection]") {

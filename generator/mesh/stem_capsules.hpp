@@ -51,13 +51,14 @@ double stemReach(const std::vector<Capsule>& stem, const Vec3& x, double minRadi
 double segmentDistance(const Vec3& p0, const Vec3& p1, const Vec3& q0, const Vec3& q1);
 
 // Where two stems' wood meets: over every pair of their capsules, each radius times `inflate`, that overlap
-// at their axes' closest points, the smallest distance from x to the middle of those points, in units of the
-// two inflated radii there (infinite when the stems' capsules never overlap).
+// at their axes' closest points, the smallest distance from x to the middle of the overlap (half-way between the
+// closest points; for near-parallel axes, half-way between them along the length where they stay within reach),
+// in units of the two inflated radii at the closest points (infinite when the stems' capsules never overlap).
 double distanceToOverlap(const std::vector<Capsule>& a, const std::vector<Capsule>& b, const Vec3& x, double inflate);
-// The same in two steps, for many points against one pair of stems: where their inflated capsules overlap (the
-// middle of each overlapping pair's closest points, and the two inflated radii there), then the distance.
+// The same in two steps, for many points against one pair of stems: where their inflated capsules overlap (a
+// segment of middles, and the two inflated radii at the closest points), then the distance.
 struct WoodOverlap {
-  Vec3 middle{0.0};
+  Vec3 from{0.0}, to{0.0};
   double reach = 0;
 };
 std::vector<WoodOverlap> woodOverlaps(const std::vector<Capsule>& a, const std::vector<Capsule>& b, double inflate);
