@@ -124,17 +124,16 @@ std::vector<WoodOverlap> woodOverlaps(const std::vector<Capsule>& a, const std::
       const Vec3 pa = ca.a + (ca.b - ca.a) * s, pb = cb.a + (cb.b - cb.a) * t;
       const double reach = inflate * (ca.ra + (ca.rb - ca.ra) * s + cb.ra + (cb.rb - cb.ra) * t);
       if (reach <= 0.0 || glm::distance(pa, pb) >= reach) continue;
+      const double la = glm::length(ca.b - ca.a), lb = glm::length(cb.b - cb.a);
+      if (la <= 0.0 || lb <= 0.0 || std::abs(glm::dot(ca.b - ca.a, cb.b - cb.a)) < kParallel * la * lb) {
+        out.push_back(WoodOverlap{0.5 * (pa + pb), 0.5 * (pa + pb), reach});
+        continue;
+      }
       // Near-parallel axes overlap along a length, not at one point (two grass stalks from one root).
       auto middle = [&](double u) {
         const Vec3 p = ca.a + (ca.b - ca.a) * u;
         return 0.5 * (p + nearestOnSegment(cb.a, cb.b, p));
       };
-      const double la = glm::length(ca.b - ca.a), lb = glm::length(cb.b - cb.a);
-      const bool parallel = la > 0.0 && lb > 0.0 && std::abs(glm::dot(ca.b - ca.a, cb.b - cb.a)) >= kParallel * la * lb;
-      if (!parallel) {
-        out.push_back(WoodOverlap{0.5 * (pa + pb), 0.5 * (pa + pb), reach});
-        continue;
-      }
       out.push_back(WoodOverlap{middle(overlapEnd(ca, cb, reach, s, 0.0)), middle(overlapEnd(ca, cb, reach, s, 1.0)), reach});
     }
   }
