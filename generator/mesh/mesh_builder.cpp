@@ -1053,31 +1053,39 @@ class Builder {
       }
     }
     // Its wood clears the parent only where it splits (a limb fused along its trunk, the willow file's): no tube, the
-    // clones and any children laid out there leave one box. Its first cross section stood on the skeleton beside
+    // clones and the children laid out there leave one box. Its first cross section stood on the skeleton beside
     // the collar and the split slab squeezed after it folded against the neck, or ended a metre-long neck inside
     // the parent's corners (the willow file at seeds 1-3: mesh-made pairs 59 -> 7, those against their trunks 52 -> 0).
     if (split && start && !start->top && start->parentReach > 0.0 && st.cloneOf < 0 && tubeStart > sEnd - splitSlab.h) {
+      std::vector<int> moved;
       for (const Slab& slab : slabs) {
-        splitSlab.children.insert(splitSlab.children.end(), slab.children.begin(), slab.children.end());
+        moved.insert(moved.end(), slab.children.begin(), slab.children.end());
         splitSlab.need = std::max(splitSlab.need, slab.need);
       }
       // A collar near the split is the box's first cross section, the box along the collar (across the neck's end).
-      if (glm::distance(last.center, poly.position(sEnd)) <= kFusedSplitNear * poly.radius(0.0)) {
-        connectSplit(stem, poly, last, splitSlab, true);
-        return;
-      }
       // Otherwise the box stands at the split, moved out from the parent's axis until its corners clear the parent's.
-      Vec3 p = poly.position(sEnd);
-      const Vec3 rel = p - start->branchPoint;
-      const Vec3 radial = rel - glm::dot(rel, start->parentAxis) * start->parentAxis;
-      const double r = std::max(poly.radius(sEnd), splitSlab.need);
-      const double clear = start->parentReach + r * opt_.limitCompensation;
-      const double off = glm::length(radial);
-      if (off < clear && off > 0.0) p += radial * ((clear - off) / off);
-      const RingFrame frame = transportFrame(last.frame, poly.endDirection());
-      const Ring lo = emitRing(stem, p, frame, r, last.tex + barkTextureAdvance(glm::distance(p, last.center), r), sEnd);
-      band(last, lo);
-      connectSplit(stem, poly, lo, splitSlab);
+      const bool near = glm::distance(last.center, poly.position(sEnd)) <= kFusedSplitNear * poly.radius(0.0);
+      Ring lo = last;
+      if (!near) {
+        Vec3 p = poly.position(sEnd);
+        const Vec3 rel = p - start->branchPoint;
+        const Vec3 radial = rel - glm::dot(rel, start->parentAxis) * start->parentAxis;
+        const double r = std::max(poly.radius(sEnd), splitSlab.need);
+        const double clear = start->parentReach + r * opt_.limitCompensation;
+        const double off = glm::length(radial);
+        if (off < clear && off > 0.0) p += radial * ((clear - off) / off);
+        const RingFrame frame = transportFrame(last.frame, poly.endDirection());
+        lo = emitRing(stem, p, frame, r, last.tex + barkTextureAdvance(glm::distance(p, last.center), r), sEnd);
+        band(last, lo);
+      }
+      // Children attached along the fused length join the box where it stands within reach of their attachment;
+      // farther ones are fake branches now (left to the next pass, they cost the whole tree a second meshing).
+      const Vec3 boxCenter = lo.center + (near ? lo.frame.T : poly.endDirection()) * (0.5 * (splitSlab.hi - splitSlab.lo));
+      const std::vector<int> joined = joinedHere(boxCenter, poly.radius(sEnd), moved);
+      splitSlab.children.insert(splitSlab.children.end(), joined.begin(), joined.end());
+      connectingMoved_ = !joined.empty();
+      connectSplit(stem, poly, lo, splitSlab, near);
+      connectingMoved_ = false;
       return;
     }
     auto gap = [&](double at) { return gapAt(poly, at); };
