@@ -498,7 +498,8 @@ TEST_CASE("a twig whose neck crosses another stem where the skeletons do not is 
   // clones), the willow preset at seed 2 30 -> 11 (four twigs with their clones; at seed 4 24 -> 11 once
   // limbs fused along a trunk up to their split got their own construction, which left seed 2 none to take), the palm preset at seed 2 14 -> 0
   // (thin level-1 fronds); the aspen file 25 -> 0 (all at
-  // twigs' necks), the tupelo file 12 -> 0 (two branches bearing only twigs among them), the sassafras file at
+  // twigs' necks), the tupelo file 12 -> 0 (two branches bearing only twigs among them; at seed 3 once a neck's
+  // slabs counted as its neck, 6 -> 0), the sassafras file at
   // seed 2 12 -> 0 (branches bearing only twigs, each neck through its own tube), the desert bush file
   // 23 -> 10 (the rest at limbs' necks).
   struct Case {
@@ -512,6 +513,7 @@ TEST_CASE("a twig whose neck crosses another stem where the skeletons do not is 
                                         {"palm", false, 2, true},
                                         {"quaking_aspen", true, 1, true},
                                         {"black_tupelo", true, 1, true},
+                                        {"black_tupelo", true, 3, true},  // a twig through a branch's neck slab
                                         {"sassafras", true, 2, true},
                                         {"desert_bush", true, 1, false}}));
   INFO(tree.name << " at seed " << tree.seed);

@@ -1658,7 +1658,7 @@ class Builder {
       r.v[k] = addVertex(glm::mix(position(a.v[k]), position(b.v[k]), t) + shift, r.radius, level, r.frame.T);
       addUvw(r.v[k], static_cast<int>(k), r.tex);
     }
-    out_.rings.push_back(MeshRing{stem, r.v, r.center, r.tex, r.radius, -1.0});
+    out_.rings.push_back(MeshRing{stem, r.v, r.center, r.tex, r.radius, -1.0, false, true});
     return r;
   }
 

@@ -239,7 +239,9 @@ std::vector<bool> quadsOnOwnRings(const TreeMesh& tree, const std::vector<int>& 
 }
 
 // Per quad, whether it lies in its own stem's neck or first band: a corner on one of the stem's cross sections
-// before its first on the skeleton (an inset or a collar).
+// before its first on the skeleton (an inset or a collar), or on a cross section of its neck's slabs (neck ports,
+// made after the neck's far end: the tupelo file's 6 mesh-made pairs at seed 3 were a branch's neck slab through a
+// twig, unsearched).
 std::vector<bool> neckQuads(const TreeMesh& tree) {
   std::vector<int> neckOf(tree.mesh.vertexCount(), -1);
   std::vector<bool> pastNeck;
@@ -248,7 +250,7 @@ std::vector<bool> neckQuads(const TreeMesh& tree) {
     const auto stem = static_cast<std::size_t>(ring.stem);
     if (pastNeck.size() <= stem) pastNeck.resize(stem + 1, false);
     if (ring.arc >= 0.0) pastNeck[stem] = true;
-    if (pastNeck[stem]) continue;
+    if (pastNeck[stem] && !ring.alongNeck) continue;
     for (std::uint32_t v : ring.vertices) neckOf[v] = ring.stem;
   }
   return quadsOnOwnRings(tree, neckOf);

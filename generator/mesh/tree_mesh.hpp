@@ -18,6 +18,7 @@ struct MeshRing {
   double radius = 0;  // skeleton radius (the corners sit at limitCompensation times this)
   double arc = -1;    // arc length along its stem's skeleton (-1: a neck or sub-box ring, off the skeleton)
   bool inset = false; // a square inset in the parent's side: its corners carry the parent's texture
+  bool alongNeck = false;  // a cross section of a neck's slabs (neck ports), made after the neck's far end
 };
 
 // A branch point as built: the parent stem, the children connected there and how.
