@@ -1080,11 +1080,11 @@ class Builder {
       }
       // Children attached along the fused length join the box where it stands within reach of their attachment;
       // farther ones are fake branches now (left to the next pass, they cost the whole tree a second meshing).
-      const Vec3 boxCenter = lo.center + (near ? lo.frame.T : poly.endDirection()) * (0.5 * (splitSlab.hi - splitSlab.lo));
-      const std::vector<int> joined = joinedHere(boxCenter, poly.radius(sEnd), moved);
+      const Vec3 boxAxis = near ? lo.frame.T : poly.endDirection();
+      const std::vector<int> joined = joinedHere(lo.center + boxAxis * (0.5 * (splitSlab.hi - splitSlab.lo)), poly.radius(sEnd), moved);
       splitSlab.children.insert(splitSlab.children.end(), joined.begin(), joined.end());
       connectingMoved_ = !joined.empty();
-      connectSplit(stem, poly, lo, splitSlab, near);
+      connectSplit(stem, lo, splitSlab, boxAxis);
       connectingMoved_ = false;
       return;
     }
@@ -1218,7 +1218,7 @@ class Builder {
         splitSlab.lo = at;
         const Ring lo = makeRing(stem, poly, last, at, splitSlab.need, keep);
         band(last, lo);
-        connectSplit(stem, poly, lo, splitSlab);
+        connectSplit(stem, lo, splitSlab, poly.endDirection());
         return;
       }
       // A plain cross section the band to which would run backwards (the inside of a bend tighter than the radius)
@@ -1771,9 +1771,8 @@ class Builder {
 
   // An equal split (Nystad app. D): the clones leave through the top and the sides of a last slab;
   // with two clones the slab is shaped as a roof so that both leave at similar angles.
-  // alongLo: the slab runs along lo's own direction (a collar), not the stem's last edge.
-  void connectSplit(int stem, const StemPolyline& poly, const Ring& lo, const Slab& slab, bool alongLo = false) {
-    const Vec3 dir = alongLo ? lo.frame.T : poly.endDirection();
+  // dir: the slab's axis (the stem's last edge, or a collar's own direction).
+  void connectSplit(int stem, const Ring& lo, const Slab& slab, const Vec3& dir) {
     const Vec3 p = lo.center + dir * (slab.hi - slab.lo);
     const RingFrame frame = transportFrame(lo.frame, dir);
     const Ring hi = emitRing(stem, p, frame, lo.radius, lo.tex + barkTextureAdvance(slab.hi - slab.lo, lo.radius));

@@ -161,12 +161,7 @@ class PairClassifier {
         const int py = collarParent(skeleton_, y);
         if (py < 0) continue;
         const bool kin = cloneKin(skeleton_, x, py);
-        if (!kin && !unrelatedTo(skeleton_, x, py)) continue;
-        const std::vector<Capsule>& cx = kin ? kinCapsules(x, py) : capsules(x, py, x);
-        const std::vector<Capsule>& cp = kin ? kinCapsules(py, x) : capsules(x, py, py);
-        const double reachX = stemReach(cx, h.point, builtRadius(tree_.mesh, fx));
-        const double reachP = stemReach(cp, h.point);
-        if (woodMeets([&, xs = x]() -> const auto& { return kin ? kinOverlaps(xs, py) : overlaps(xs, py); }, h.point, reachX, reachP)) meets = true;
+        if (kin || unrelatedTo(skeleton_, x, py)) meets = meets || woodMeetsAt(x, py, kin, h.point, builtRadius(tree_.mesh, fx));
       }
     }
     // Both quads stand for their parents' surfaces where the two parents' wood overlaps (two clones grown into each
@@ -174,16 +169,20 @@ class PairClassifier {
     if (candidate && !meets) {
       const int px = collarParent(skeleton_, h.stemA), py = collarParent(skeleton_, h.stemB);
       const bool kin = px >= 0 && py >= 0 && cloneKin(skeleton_, px, py);
-      if (px >= 0 && py >= 0 && (kin || unrelatedTo(skeleton_, px, py) || unrelatedTo(skeleton_, py, px))) {
-        const std::vector<Capsule>& cx = kin ? kinCapsules(px, py) : capsules(px, py, px);
-        const std::vector<Capsule>& cy = kin ? kinCapsules(py, px) : capsules(px, py, py);
-        meets = woodMeets([&]() -> const auto& { return kin ? kinOverlaps(px, py) : overlaps(px, py); }, h.point, stemReach(cx, h.point), stemReach(cy, h.point));
-      }
+      if (px >= 0 && py >= 0 && (kin || unrelatedTo(skeleton_, px, py) || unrelatedTo(skeleton_, py, px))) meets = woodMeetsAt(px, py, kin, h.point, 0.0);
     }
     h.origin = meets ? PairOrigin::Skeleton : PairOrigin::Mesh;
   }
 
  private:
+  // Whether the wood of stems x and y meets at `point` (kin: clones of one split, each seen from where it has left
+  // the other's wood); minX: the radius x's quad there was built for.
+  bool woodMeetsAt(int x, int y, bool kin, const Vec3& point, double minX) {
+    const std::vector<Capsule>& cx = kin ? kinCapsules(x, y) : capsules(x, y, x);
+    const std::vector<Capsule>& cy = kin ? kinCapsules(y, x) : capsules(x, y, y);
+    return woodMeets([&]() -> const auto& { return kin ? kinOverlaps(x, y) : overlaps(x, y); }, point, stemReach(cx, point, minX), stemReach(cy, point));
+  }
+
   // Where the wood of stems x and y overlaps (their capsules as seen against each other), once per pair: a
   // crossing of two branches makes many pairs of quads.
   const std::vector<WoodOverlap>& overlaps(int x, int y) {
