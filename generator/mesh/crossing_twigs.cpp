@@ -41,13 +41,15 @@ std::vector<int> familyRoots(const Skeleton& skeleton) {
   return root;
 }
 
-// Per stem, whether it belongs to a twig this pass may take out: a family (a stem with the clones it splits
-// into) with quads, from level 2 on (or thin at level 1), whose meshed descendants lie at most kMaxHeight families
-// below it (a branch bearing only twigs: they go with it).
-std::vector<bool> twigsOf(const TreeMesh& tree, const Skeleton& skeleton, const std::vector<int>& root, int maxHeight = kMaxHeight) {
+// Per stem, the twig this pass may take out that it belongs to (-1: none): a family (a stem with the clones it
+// splits into) with quads, from level 2 on (or thin at level 1), whose meshed descendants lie at most kMaxHeight
+// families below it (a branch bearing only twigs: they go with it); or, of a family too large for that, a clone
+// as thin that ends it bearing nothing, alone (the desert bush file's forks a few centimetres long at its
+// branches' ends, whose split boxes crossed a neighbouring fork's).
+std::vector<int> twigsOf(const TreeMesh& tree, const Skeleton& skeleton, const std::vector<int>& root, int maxHeight = kMaxHeight) {
   const std::size_t n = skeleton.stems.size();
-  std::vector<bool> meshed(n, false), twig(n, false);
-  std::vector<int> height(n, 0);
+  std::vector<bool> meshed(n, false), bears(n, false);  // meshed: per family
+  std::vector<int> height(n, 0), twig(n, -1);
   for (int s : tree.quadStem) {
     if (s >= 0 && static_cast<std::size_t>(s) < n) meshed[static_cast<std::size_t>(root[static_cast<std::size_t>(s)])] = true;
   }
@@ -63,23 +65,46 @@ std::vector<bool> twigsOf(const TreeMesh& tree, const Skeleton& skeleton, const 
       }
     }
   }
+  // Whether a stem, or a clone splitting from it, bears a meshed child.
+  for (std::size_t i = 0; i < n; ++i) {
+    const SkeletonStem& st = skeleton.stems[i];
+    if (st.cloneOf >= 0 || st.parentStem < 0 || !meshed[static_cast<std::size_t>(root[i])]) continue;
+    for (int x = st.parentStem; x >= 0 && !bears[static_cast<std::size_t>(x)]; x = skeleton.stems[static_cast<std::size_t>(x)].cloneOf) {
+      bears[static_cast<std::size_t>(x)] = true;
+    }
+  }
   for (std::size_t i = 0; i < n; ++i) {
     const SkeletonStem& r = skeleton.stems[static_cast<std::size_t>(root[i])];
     const auto ri = static_cast<std::size_t>(root[i]);
-    if (r.parentStem < 0) continue;  // a trunk is never a twig
-    const bool thin = r.level == kFromLevel - 1 && r.startRadius <= kThinLevelOne * skeleton.stems[static_cast<std::size_t>(r.parentStem)].startRadius;
-    twig[i] = meshed[ri] && height[ri] <= maxHeight && (r.level >= kFromLevel || thin);
+    if (r.parentStem < 0 || !meshed[ri]) continue;  // a trunk is never a twig
+    const double thinAt = kThinLevelOne * skeleton.stems[static_cast<std::size_t>(r.parentStem)].startRadius;
+    if (height[ri] <= maxHeight && (r.level >= kFromLevel || (r.level == kFromLevel - 1 && r.startRadius <= thinAt))) {
+      twig[i] = root[i];
+      continue;
+    }
+    // The outermost clone on the way back to the family's root that bears nothing, with what splits from it.
+    for (int x = static_cast<int>(i); x >= 0;) {
+      const SkeletonStem& c = skeleton.stems[static_cast<std::size_t>(x)];
+      if (c.cloneOf < 0 || bears[static_cast<std::size_t>(x)] || (r.level < kFromLevel && c.startRadius > thinAt)) break;
+      twig[i] = x;
+      x = c.cloneOf;
+    }
   }
   return twig;
 }
 
-// The twig (a family's root) a mesh-made pair takes out: of two, the one whose quad strays farther from its
-// skeleton.
-int culprit(const QuadPairHit& h, const std::vector<bool>& twig, const std::vector<int>& root) {
-  const bool a = h.stemA >= 0 && twig[static_cast<std::size_t>(h.stemA)];
-  const bool b = h.stemB >= 0 && twig[static_cast<std::size_t>(h.stemB)];
-  if (a && (!b || h.reachA >= h.reachB)) return root[static_cast<std::size_t>(h.stemA)];
-  return b ? root[static_cast<std::size_t>(h.stemB)] : -1;
+// The twig a mesh-made pair takes out: of two, the one whose quad strays farther from its skeleton.
+int culprit(const QuadPairHit& h, const std::vector<int>& twig) {
+  const int a = h.stemA >= 0 ? twig[static_cast<std::size_t>(h.stemA)] : -1;
+  const int b = h.stemB >= 0 ? twig[static_cast<std::size_t>(h.stemB)] : -1;
+  if (a >= 0 && (b < 0 || h.reachA >= h.reachB)) return a;
+  return b;
+}
+
+// A stem's source (a clone's) or parent: the stem it grows from.
+int grownFrom(const Skeleton& skeleton, int stem) {
+  const SkeletonStem& st = skeleton.stems[static_cast<std::size_t>(stem)];
+  return st.cloneOf >= 0 ? st.cloneOf : st.parentStem;
 }
 
 // The face that closes a twig's port once its quads are gone: its quads' four edges that no other of its quads
@@ -135,21 +160,21 @@ struct TakenOut {
 
 // Takes the listed twigs' quads out, closes each port, drops the vertices no quad uses any more; returns the
 // twigs taken out (those with a port to close; with `allOrNothing`, none unless every twig with quads has one).
-TakenOut takeOut(TreeMesh& tree, const Skeleton& skeleton, const std::vector<int>& root, const std::vector<int>& twigs,
+TakenOut takeOut(TreeMesh& tree, const Skeleton& skeleton, const std::vector<int>& twigs,
                  bool allOrNothing = false) {
   QuadMesh& mesh = tree.mesh;
   std::vector<std::uint32_t> uses(mesh.vertexCount(), 0);
   for (const Quad& q : mesh.quads) {
     for (std::uint32_t v : q) ++uses[v];
   }
-  // Per stem, the outermost of the twigs taken out that it belongs to (its family, or one it grows from).
+  // Per stem, the outermost of the twigs taken out that it belongs to (itself, a clone it splits from, its family,
+  // or one it grows from).
   std::vector<int> takenWith(skeleton.stems.size(), -2);
   auto ownerOf = [&](int s) {
     int found = -1;
-    for (int x = s; x >= 0; x = skeleton.stems[static_cast<std::size_t>(root[static_cast<std::size_t>(x)])].parentStem) {
-      const int r = root[static_cast<std::size_t>(x)];
-      const auto it = std::lower_bound(twigs.begin(), twigs.end(), r);
-      if (it != twigs.end() && *it == r) found = static_cast<int>(it - twigs.begin());
+    for (int x = s; x >= 0; x = grownFrom(skeleton, x)) {
+      const auto it = std::lower_bound(twigs.begin(), twigs.end(), x);
+      if (it != twigs.end() && *it == x) found = static_cast<int>(it - twigs.begin());
     }
     return found;
   };
@@ -190,7 +215,7 @@ TakenOut takeOut(TreeMesh& tree, const Skeleton& skeleton, const std::vector<int
     if (quadsOf[*t].front() == f) {
       out.ports.push_back(static_cast<std::uint32_t>(quads.size()));
       quads.push_back(*ports[*t]);
-      quadStem.push_back(skeleton.stems[static_cast<std::size_t>(twigs[*t])].parentStem);
+      quadStem.push_back(grownFrom(skeleton, twigs[*t]));
     }
   }
   std::sort(members.begin(), members.end());
@@ -237,7 +262,7 @@ bool takeOutTwigs(TreeMesh& tree, const Skeleton& skeleton, const std::vector<in
   std::sort(twigs.begin(), twigs.end());
   twigs.erase(std::unique(twigs.begin(), twigs.end()), twigs.end());
   if (twigs.empty()) return true;
-  if (takeOut(tree, skeleton, root, twigs, true).twigs.empty()) return false;
+  if (takeOut(tree, skeleton, twigs, true).twigs.empty()) return false;
   computeNormals(tree.mesh);
   return true;
 }
@@ -246,19 +271,21 @@ std::size_t fakeCrossingTwigs(TreeMesh& tree, const Skeleton& skeleton) {
   const std::vector<int> root = familyRoots(skeleton);
   // One search, for every stem that is a twig or becomes one once its twigs are taken out: the second pass only
   // looks again at the pairs found.
-  const std::vector<bool> deep = twigsOf(tree, skeleton, root, kMaxHeight + 1);
+  const std::vector<int> deepTwigs = twigsOf(tree, skeleton, root, kMaxHeight + 1);
+  std::vector<bool> deep(deepTwigs.size());
+  for (std::size_t i = 0; i < deep.size(); ++i) deep[i] = deepTwigs[i] >= 0;
   std::vector<QuadPairHit> hits = meshMadePairsOf(tree, skeleton, deep);
   std::size_t taken = 0;
   for (int pass = 0; pass < kPasses && !hits.empty(); ++pass) {
-    const std::vector<bool> twig = twigsOf(tree, skeleton, root);
+    const std::vector<int> twig = twigsOf(tree, skeleton, root);
     std::vector<int> culprits;
     for (const QuadPairHit& h : hits) {
-      if (const int c = culprit(h, twig, root); c >= 0) culprits.push_back(c);
+      if (const int c = culprit(h, twig); c >= 0) culprits.push_back(c);
     }
     std::sort(culprits.begin(), culprits.end());
     culprits.erase(std::unique(culprits.begin(), culprits.end()), culprits.end());
     if (culprits.empty()) break;
-    const TakenOut out = takeOut(tree, skeleton, root, culprits);
+    const TakenOut out = takeOut(tree, skeleton, culprits);
     if (out.twigs.empty()) break;
     taken += out.twigs.size();
     auto gone = [&](int stem) { return std::binary_search(out.members.begin(), out.members.end(), stem); };

@@ -16,8 +16,8 @@ constexpr const char* kMeshDisplacedHelp =
     "Mesh the twigs (and twig-bearing branches) the mesh could not join near where they attach: those their parent "
     "could join only more than half a parent radius along (meshed from that far slab), thin twigs inside or shallow "
     "along their parent, twigs just before their parent splits or just past it inside another of its clones, twigs passing "
-    "through a neighbouring branch's joint, twigs (and branches bearing only twigs, and fronds a quarter of their parent's base radius thick) whose neck or "
-    "first band the mesh made cross another branch or their own tube (default: fake branches on their skeletons, as stubs)";
+    "through a neighbouring branch's joint, twigs (and branches bearing only twigs, fronds a quarter of their parent's base radius thick, and clones as thin "
+    "that end a branch bearing nothing) whose neck or first band the mesh made cross another branch or their own tube (default: fake branches on their skeletons, as stubs)";
 
 // What generate and check report as "faked stems" (each kind is listed in kMeshDisplacedHelp).
 constexpr const char* kFakedStemsNote = "twigs the mesh could not join near where they attach, or whose joint crossed another branch, with their clones: fake branches";
