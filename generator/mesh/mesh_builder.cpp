@@ -2021,7 +2021,6 @@ class Builder {
     for (std::size_t i = 0; i < m.positions.size(); ++i) {
       m.uvw[i] = glm::vec3(uvwSum_[i] / static_cast<double>(std::max(1, uvwCount_[i])));
     }
-    computeNormals(m);
   }
 };
 
@@ -2062,6 +2061,8 @@ TreeMesh buildTreeMesh(const Skeleton& skeleton, const MeshOptions& options) {
     if (pass == kFarTwigPasses || far.empty()) {
       // Last, the twigs whose quads still cross another stem's where the skeletons do not meet.
       if (options.fakeDisplaced && options.fakeCrossingTwigs) fakeCrossingTwigs(out, skeleton);
+      // Once, on the mesh as it leaves (taking twigs out computes them for what is left).
+      if (out.mesh.normals.size() != out.mesh.positions.size()) computeNormals(out.mesh);
       return out;
     }
     std::vector<int> more;
