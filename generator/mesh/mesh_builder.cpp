@@ -562,7 +562,11 @@ class Builder {
     double s = tubeStartPast(stem, poly, start, port.center);
     double portRadius = 0.0;
     for (const Vec3& corner : c) portRadius += 0.25 * glm::distance(corner, port.center);
-    s = clearOfParent(poly, start, port.frame, c, s, 0.25 * std::max(portRadius, rc));
+    const double step = 0.25 * std::max(portRadius, rc), unclear = s;
+    s = clearOfParent(poly, start, port.frame, c, s, step);
+    // Found where its band first clears, the cross section only grazes the parent (a cottonwood file limb's
+    // corner 0.1 mm off the trunk's long band, 2 mesh-made pairs): one step on.
+    if (s > unclear) s = std::min(s + step, poly.length());
     if (s >= 0.5 * poly.length()) return std::nullopt;
     const Vec3 center = poly.position(s);
     const RingFrame frame = transportFrame(port.frame, poly.direction(s));
