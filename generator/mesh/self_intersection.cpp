@@ -469,7 +469,7 @@ std::vector<QuadPairHit> meshMadePairsOf(const TreeMesh& tree, const Skeleton& s
       for (std::size_t k = 0; k < count; ++k) {
         const std::uint32_t b = near[k];
         if (i == j && b <= a) continue;
-        if (!quadBoxes[a].overlaps(quadBoxes[b]) || quadContact(ca.index, nearCorners[k].index) != QuadContact::Apart) continue;
+        if (!quadBoxes[a].overlaps(quadBoxes[b]) || shareCorner(ca.index, nearCorners[k].index)) continue;
         keepIfMeshMade(ca, nearCorners[k], a, b, classifier, found);
       }
     }
@@ -499,7 +499,7 @@ std::vector<QuadPairHit> meshMadePairsWith(const TreeMesh& tree, const Skeleton&
     forEachOverlap(bvh, boxOf(mesh, g), [&](std::uint32_t k) {
       const std::uint32_t f = quads[k];
       // A pair of two listed quads once.
-      if (f == g || quadContact(mesh.quads[f], mesh.quads[g]) != QuadContact::Apart) return;
+      if (f == g || shareCorner(mesh.quads[f], mesh.quads[g])) return;
       if (std::binary_search(quads.begin(), quads.end(), g) && g < f) return;
       keepIfMeshMade(cornersOf(mesh, f), cornersOf(mesh, g), f, g, classifier, found);
     });
