@@ -76,4 +76,10 @@ struct Skeleton {
   std::vector<Leaf> leaves;
 };
 
+// The stem a stem grows from: the one a clone split from, else its parent (-1: a trunk).
+inline int grownFrom(const Skeleton& skeleton, int stem) {
+  const SkeletonStem& s = skeleton.stems[static_cast<std::size_t>(stem)];
+  return s.cloneOf >= 0 ? s.cloneOf : s.parentStem;
+}
+
 }  // namespace arbor

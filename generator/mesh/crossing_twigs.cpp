@@ -101,12 +101,6 @@ int culprit(const QuadPairHit& h, const std::vector<int>& twig) {
   return b;
 }
 
-// A stem's source (a clone's) or parent: the stem it grows from.
-int grownFrom(const Skeleton& skeleton, int stem) {
-  const SkeletonStem& st = skeleton.stems[static_cast<std::size_t>(stem)];
-  return st.cloneOf >= 0 ? st.cloneOf : st.parentStem;
-}
-
 // The face that closes a twig's port once its quads are gone: its quads' four edges that no other of its quads
 // shares, in order (the parent's face there, as the twig's first band ran on from it). None when the twig meets
 // the rest of the mesh otherwise, or one of its inner vertices is also another stem's.

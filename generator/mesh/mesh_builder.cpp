@@ -853,7 +853,7 @@ class Builder {
           // (b's corners are not made yet: indices no vertex has).
           const std::array<std::uint32_t, 4> ids{(*port)[i], (*port)[j], kUnmade + static_cast<std::uint32_t>(j),
                                                  kUnmade + static_cast<std::uint32_t>(i)};
-          if (quadContact(ids, q) != QuadContact::Apart) {
+          if (shareCorner(ids, q)) {
             if (quadsMeet(QuadCorners{side, ids}, QuadCorners{face, q})) return true;
             continue;
           }

@@ -100,12 +100,6 @@ bool woodMeets(Overlaps&& overlaps, const Vec3& point, double reachA, double rea
   return (reachA <= kWoodReach && reachB <= kWoodReach) || distanceToOverlap(overlaps(), point) <= kOverlapNear;
 }
 
-// The stem whose surface a stem's collar stands in for: its parent (a clone's collar is its source's end).
-int collarParent(const Skeleton& skeleton, int stem) {
-  const SkeletonStem& s = skeleton.stems[static_cast<std::size_t>(stem)];
-  return s.cloneOf >= 0 ? s.cloneOf : s.parentStem;
-}
-
 // x crossing the collar of a child of p is x crossing p only if x is not p, nor p's parent or clone (those count
 // as kin, below). (x may be another child of p: its capsules start where it leaves p's wood, so its own joint never
 // counts as crossing p.)
@@ -113,7 +107,7 @@ bool unrelatedTo(const Skeleton& skeleton, int x, int p) {
   if (x == p || x < 0) return false;
   const SkeletonStem& sx = skeleton.stems[static_cast<std::size_t>(x)];
   if (sx.parentStem == p && sx.cloneOf < 0) return true;
-  return relationOf(skeleton, x, p) == StemRelation::Other && collarParent(skeleton, x) != p;
+  return relationOf(skeleton, x, p) == StemRelation::Other && grownFrom(skeleton, x) != p;
 }
 
 // x and p are clones of one split, or one is the other's clone: past where each has left the other's wood, two
@@ -155,10 +149,10 @@ class PairClassifier {
       h.reachB = stemReach(capsules(h.stemA, h.stemB, h.stemB), h.point, builtRadius(tree_.mesh, h.b));
     }
     bool meets = candidate && woodMeets([&]() -> const auto& { return overlaps(h.stemA, h.stemB); }, h.point, h.reachA, h.reachB);
-    // A child's collar lies on its parent's surface: a stem crossing that parent's wood crosses the collar too.
+    // A child's collar lies on its parent's surface (a clone's on its source's end): a stem crossing that wood crosses the collar too.
     if (candidate && !meets) {
       for (const auto& [x, fx, y] : {std::tuple{h.stemA, h.a, h.stemB}, std::tuple{h.stemB, h.b, h.stemA}}) {
-        const int py = collarParent(skeleton_, y);
+        const int py = grownFrom(skeleton_, y);
         if (py < 0) continue;
         const bool kin = cloneKin(skeleton_, x, py);
         if (kin || unrelatedTo(skeleton_, x, py)) meets = meets || woodMeetsAt(x, py, kin, h.point, builtRadius(tree_.mesh, fx));
@@ -167,7 +161,7 @@ class PairClassifier {
     // Both quads stand for their parents' surfaces where the two parents' wood overlaps (two clones grown into each
     // other, two branches crossing where each bears a child): the children cross there as their parents do.
     if (candidate && !meets) {
-      const int px = collarParent(skeleton_, h.stemA), py = collarParent(skeleton_, h.stemB);
+      const int px = grownFrom(skeleton_, h.stemA), py = grownFrom(skeleton_, h.stemB);
       const bool kin = px >= 0 && py >= 0 && cloneKin(skeleton_, px, py);
       if (px >= 0 && py >= 0 && (kin || unrelatedTo(skeleton_, px, py) || unrelatedTo(skeleton_, py, px))) meets = woodMeetsAt(px, py, kin, h.point, 0.0);
     }
