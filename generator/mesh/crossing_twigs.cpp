@@ -94,9 +94,11 @@ std::vector<int> twigsOf(const TreeMesh& tree, const Skeleton& skeleton, const s
 }
 
 // The twig a mesh-made pair takes out: of two, the one whose quad strays farther from its skeleton.
-int culprit(const QuadPairHit& h, const std::vector<int>& twig) {
+int culprit(const QuadPairHit& h, const std::vector<int>& twig, const Skeleton& skeleton) {
   const int a = h.stemA >= 0 ? twig[static_cast<std::size_t>(h.stemA)] : -1;
   const int b = h.stemB >= 0 ? twig[static_cast<std::size_t>(h.stemB)] : -1;
+  // A neck through its own parent: the child's.
+  if (h.throughParent) return skeleton.stems[static_cast<std::size_t>(h.stemA)].parentStem == h.stemB ? a : b;
   if (a >= 0 && (b < 0 || h.reachA >= h.reachB)) return a;
   return b;
 }
@@ -150,6 +152,7 @@ struct TakenOut {
   std::vector<int> twigs;    // the families' roots
   std::vector<int> members;  // every stem of theirs that had quads, sorted
   std::vector<std::uint32_t> ports;  // the faces that closed their ports, in the mesh after, sorted
+  std::vector<int> portTwigs;        // per port, the twig whose port it closed
 };
 
 // Takes the listed twigs' quads out, closes each port, drops the vertices no quad uses any more; returns the
@@ -208,6 +211,7 @@ TakenOut takeOut(TreeMesh& tree, const Skeleton& skeleton, const std::vector<int
     members.push_back(tree.quadStem[f]);
     if (quadsOf[*t].front() == f) {
       out.ports.push_back(static_cast<std::uint32_t>(quads.size()));
+      out.portTwigs.push_back(twigs[*t]);
       quads.push_back(*ports[*t]);
       quadStem.push_back(grownFrom(skeleton, twigs[*t]));
     }
@@ -244,6 +248,38 @@ TakenOut takeOut(TreeMesh& tree, const Skeleton& skeleton, const std::vector<int
   return out;
 }
 
+// Last, the twigs whose neck runs through their own parent (pairs left in `hits` with throughParent), tried on a copy
+// first: one whose closed port would cross the mesh where the skeleton does not stays (a random graph's trunk face
+// crossed three of the trunk's own quads), since the skeleton made the pair it was taken for.
+std::size_t takeOutNecksThroughParents(TreeMesh& tree, const Skeleton& skeleton, const std::vector<int>& root, const std::vector<QuadPairHit>& hits) {
+  const std::vector<int> twig = twigsOf(tree, skeleton, root);
+  std::vector<int> culprits;
+  for (const QuadPairHit& h : hits) {
+    if (const int c = h.throughParent ? culprit(h, twig, skeleton) : -1; c >= 0) culprits.push_back(c);
+  }
+  std::sort(culprits.begin(), culprits.end());
+  culprits.erase(std::unique(culprits.begin(), culprits.end()), culprits.end());
+  if (culprits.empty()) return 0;
+  TreeMesh trial = tree;
+  const TakenOut tried = takeOut(trial, skeleton, culprits);
+  std::vector<int> crossing;  // twigs whose closed port crosses the mesh
+  const std::vector<QuadPairHit> atPorts = pairsToMendWith(trial, skeleton, tried.ports);
+  for (std::size_t k = 0; k < tried.ports.size(); ++k) {
+    const std::uint32_t port = tried.ports[k];
+    const bool crosses = std::any_of(atPorts.begin(), atPorts.end(), [&](const QuadPairHit& h) {
+      return h.origin == PairOrigin::Mesh && (h.a == port || h.b == port);
+    });
+    if (crosses) crossing.push_back(tried.portTwigs[k]);
+  }
+  if (crossing.empty()) {
+    tree = std::move(trial);
+    return tried.twigs.size();
+  }
+  std::sort(crossing.begin(), crossing.end());
+  std::erase_if(culprits, [&](int c) { return std::binary_search(crossing.begin(), crossing.end(), c); });
+  return culprits.empty() ? 0 : takeOut(tree, skeleton, culprits).twigs.size();
+}
+
 }  // namespace
 
 bool takeOutTwigs(TreeMesh& tree, const Skeleton& skeleton, const std::vector<int>& stems) {
@@ -268,13 +304,14 @@ std::size_t fakeCrossingTwigs(TreeMesh& tree, const Skeleton& skeleton) {
   const std::vector<int> deepTwigs = twigsOf(tree, skeleton, root, kMaxHeight + 1);
   std::vector<bool> deep(deepTwigs.size());
   for (std::size_t i = 0; i < deep.size(); ++i) deep[i] = deepTwigs[i] >= 0;
-  std::vector<QuadPairHit> hits = meshMadePairsOf(tree, skeleton, deep);
+  std::vector<QuadPairHit> hits = pairsToMendOf(tree, skeleton, deep);
+  auto meshMade = [](const QuadPairHit& h) { return h.origin == PairOrigin::Mesh; };
   std::size_t taken = 0;
-  for (int pass = 0; pass < kPasses && !hits.empty(); ++pass) {
+  for (int pass = 0; pass < kPasses && std::any_of(hits.begin(), hits.end(), meshMade); ++pass) {
     const std::vector<int> twig = twigsOf(tree, skeleton, root);
     std::vector<int> culprits;
     for (const QuadPairHit& h : hits) {
-      if (const int c = culprit(h, twig); c >= 0) culprits.push_back(c);
+      if (const int c = meshMade(h) ? culprit(h, twig, skeleton) : -1; c >= 0) culprits.push_back(c);
     }
     std::sort(culprits.begin(), culprits.end());
     culprits.erase(std::unique(culprits.begin(), culprits.end()), culprits.end());
@@ -287,10 +324,11 @@ std::size_t fakeCrossingTwigs(TreeMesh& tree, const Skeleton& skeleton) {
     // A face that closed a port is new: the neck of a twig beside the one taken out may cross it (shave-grass's
     // whorls: all trees at seeds 1-3 290 -> 276 pairs).
     if (pass + 1 < kPasses) {
-      const std::vector<QuadPairHit> fresh = meshMadePairsWith(tree, skeleton, out.ports);
+      const std::vector<QuadPairHit> fresh = pairsToMendWith(tree, skeleton, out.ports);
       hits.insert(hits.end(), fresh.begin(), fresh.end());
     }
   }
+  taken += takeOutNecksThroughParents(tree, skeleton, root, hits);
   if (taken > 0) computeNormals(tree.mesh);
   return taken;
 }

@@ -1,6 +1,6 @@
 #pragma once
 // Twigs whose quads cross another stem's where the two skeletons do not meet (mesh-made pairs, which issue 13
-// wants gone) are taken out of the built mesh and drawn as fake branches; each one's port in its parent is
+// wants gone), or whose neck runs through their own parent (issue 13 wants none), are taken out of the built mesh and drawn as fake branches; each one's port in its parent is
 // closed again by the face the twig replaced.
 #include <cstddef>
 #include <vector>
@@ -15,7 +15,9 @@ namespace arbor {
 // quarter of its parent's base radius (a palm's frond, a horsetail's whorl branch: the fake branch drawn for it
 // looks the same from a few metres). Takes out, in up to two passes, the twig of each mesh-made pair with a
 // quad in either stem's neck or first band, or on the tip of another stem bearing children (of two twigs, the one
-// whose quad lies farther off its skeleton; a twig's neck through its own tube counts), adds its stems to
+// whose quad lies farther off its skeleton; a twig's neck through its own tube counts), and the twig whose neck or
+// first band crosses its own parent, whatever made the pair (a twig running close along a curving parent, meshed as
+// one straight band that cut across it: the tamarack file's 238 pairs at seeds 1-3), adds its stems to
 // tree.fakedStems and returns how many twigs were taken out. A twig whose quads do not meet the rest of the mesh in
 // exactly one four-sided port stays. The faces that close the first pass's ports are searched for the second.
 std::size_t fakeCrossingTwigs(TreeMesh& tree, const Skeleton& skeleton);

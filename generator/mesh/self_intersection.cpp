@@ -29,7 +29,7 @@ constexpr std::size_t kThreadsFrom = 20000;
 // fuzzed palm of 64 trunks: a median of 740, and a million crossing quads); on every preset and Arbaro file at
 // most 74 (a willow trunk clone's tip; 34 by necks alone).
 constexpr std::uint32_t kCrowdedNeck = 128;
-// A few bands of one stem (4 quads a band) make one box of meshMadePairsOf's hierarchy.
+// A few bands of one stem (4 quads a band) make one box of pairsToMendOf's hierarchy.
 constexpr std::uint32_t kRunQuads = 16;
 
 QuadCorners cornersOf(const QuadMesh& mesh, std::uint32_t f) {
@@ -90,6 +90,13 @@ StemRelation relationOf(const Skeleton& skeleton, int a, int b) {
   if ((sa.parentStem == b && sa.cloneOf < 0) || (sb.parentStem == a && sb.cloneOf < 0)) return StemRelation::ParentChild;
   if (sa.attachNode >= 0 && sa.attachNode == sb.attachNode) return StemRelation::Siblings;
   return StemRelation::Other;
+}
+
+// Whether a pair is a child's neck (or first band) through its own parent: the child's quad is on `neck`.
+bool neckThroughParent(const Skeleton& skeleton, const std::vector<bool>& neck, const QuadPairHit& h) {
+  if (h.relation != StemRelation::ParentChild) return false;
+  const bool aIsChild = skeleton.stems[static_cast<std::size_t>(h.stemA)].parentStem == h.stemB;
+  return neck[aIsChild ? h.a : h.b];
 }
 
 // Both stems' skeletons reach the point, or their wood (at the size of the mesh's corners) overlaps within two
@@ -209,16 +216,19 @@ class PairClassifier {
   std::unordered_map<std::uint64_t, std::vector<Capsule>> kin_;
 };
 
-// Tests quads f and g (with their corners) and keeps the pair in `found` only when they meet and the mesh made it;
-// the lower index goes first, as every search reports pairs.
-void keepIfMeshMade(const QuadCorners& cf, const QuadCorners& cg, std::uint32_t f, std::uint32_t g, PairClassifier& classifier,
-                    std::vector<QuadPairHit>& found) {
+// Tests quads f and g (with their corners) and keeps the pair in `found` only when they meet and the mesh made it,
+// or it is a child's neck through its own parent (`neck`: per quad, in its stem's neck or first band); the lower
+// index goes first, as every search reports pairs.
+void keepIfToMend(const QuadCorners& cf, const QuadCorners& cg, std::uint32_t f, std::uint32_t g, PairClassifier& classifier,
+                  const Skeleton& skeleton, const std::vector<bool>& neck, std::vector<QuadPairHit>& found) {
   const std::size_t before = found.size();
   if (f < g) testPair(cf, cg, f, g, found);
   else testPair(cg, cf, g, f, found);
   if (found.size() == before) return;
-  classifier.classify(found.back());
-  if (found.back().origin != PairOrigin::Mesh) found.pop_back();
+  QuadPairHit& h = found.back();
+  classifier.classify(h);
+  h.throughParent = neckThroughParent(skeleton, neck, h);
+  if (h.origin != PairOrigin::Mesh && !h.throughParent) found.pop_back();
 }
 
 // Per quad, whether one of its corners lies on a cross section of its own stem marked in `ringOf` (per vertex, the
@@ -282,6 +292,7 @@ SelfIntersectionReport summarise(std::vector<QuadPairHit> hits, std::size_t quad
     r.skeletonMade += h.origin == PairOrigin::Skeleton ? 1 : 0;
     r.meshMade += h.origin == PairOrigin::Mesh ? 1 : 0;
     r.meshMadeAtShallowJoints += h.shallowJoint ? 1 : 0;
+    r.necksThroughParent += h.throughParent ? 1 : 0;
   }
   r.hits = std::move(hits);
   return r;
@@ -377,13 +388,14 @@ SelfIntersectionReport checkSelfIntersections(const TreeMesh& tree, const Skelet
   auto inShallowNeck = [&](std::uint32_t quad, int stem) { return stem >= 0 && neck[quad] && shallow[static_cast<std::size_t>(stem)]; };
   for (QuadPairHit& h : hits) {
     h.shallowJoint = h.origin == PairOrigin::Mesh && (inShallowNeck(h.a, h.stemA) || inShallowNeck(h.b, h.stemB));
+    h.throughParent = neckThroughParent(skeleton, neck, h);
   }
   SelfIntersectionReport r = summarise(std::move(hits), tree.mesh.quads.size(), true);
   r.milliseconds = millisecondsSince(start);
   return r;
 }
 
-std::vector<QuadPairHit> meshMadePairsOf(const TreeMesh& tree, const Skeleton& skeleton, const std::vector<bool>& stems) {
+std::vector<QuadPairHit> pairsToMendOf(const TreeMesh& tree, const Skeleton& skeleton, const std::vector<bool>& stems) {
   const QuadMesh& mesh = tree.mesh;
   const auto n = static_cast<std::uint32_t>(std::min(mesh.quads.size(), tree.quadStem.size()));
   auto marked = [&](int stem) { return stem >= 0 && static_cast<std::size_t>(stem) < stems.size() && stems[static_cast<std::size_t>(stem)]; };
@@ -467,7 +479,7 @@ std::vector<QuadPairHit> meshMadePairsOf(const TreeMesh& tree, const Skeleton& s
         const std::uint32_t b = near[k];
         if (i == j && b <= a) continue;
         if (!quadBoxes[a].overlaps(quadBoxes[b]) || shareCorner(ca.index, nearCorners[k].index)) continue;
-        keepIfMeshMade(ca, nearCorners[k], a, b, classifier, found);
+        keepIfToMend(ca, nearCorners[k], a, b, classifier, skeleton, neck, found);
       }
     }
   };
@@ -484,13 +496,14 @@ std::vector<QuadPairHit> meshMadePairsOf(const TreeMesh& tree, const Skeleton& s
   return gathered(hits);
 }
 
-std::vector<QuadPairHit> meshMadePairsWith(const TreeMesh& tree, const Skeleton& skeleton, const std::vector<std::uint32_t>& quads) {
+std::vector<QuadPairHit> pairsToMendWith(const TreeMesh& tree, const Skeleton& skeleton, const std::vector<std::uint32_t>& quads) {
   const QuadMesh& mesh = tree.mesh;
   std::vector<QuadBox> boxes;
   for (std::uint32_t f : quads) boxes.push_back(boxOf(mesh, f));
   if (boxes.empty()) return {};
   const QuadBvh bvh = buildQuadBvh(boxes);
   PairClassifier classifier(tree, skeleton);
+  const std::vector<bool> neck = neckQuads(tree);
   std::vector<QuadPairHit> found;
   for (std::uint32_t g = 0; g < mesh.quads.size(); ++g) {
     forEachOverlap(bvh, boxOf(mesh, g), [&](std::uint32_t k) {
@@ -498,7 +511,7 @@ std::vector<QuadPairHit> meshMadePairsWith(const TreeMesh& tree, const Skeleton&
       // A pair of two listed quads once.
       if (f == g || shareCorner(mesh.quads[f], mesh.quads[g])) return;
       if (std::binary_search(quads.begin(), quads.end(), g) && g < f) return;
-      keepIfMeshMade(cornersOf(mesh, f), cornersOf(mesh, g), f, g, classifier, found);
+      keepIfToMend(cornersOf(mesh, f), cornersOf(mesh, g), f, g, classifier, skeleton, neck, found);
     });
   }
   sortHits(found);

@@ -28,6 +28,7 @@ struct QuadPairHit {
                                   // the radius its quad was built for, when larger: tips)
   bool shallowJoint = false;      // mesh-made with a quad in the neck or first band of a child leaving at under 34
                                   // degrees (shallowJoint in stem_capsules.hpp)
+  bool throughParent = false;     // a child's quad in its neck or first band against its own parent's
 };
 
 struct SelfIntersectionReport {
@@ -37,6 +38,8 @@ struct SelfIntersectionReport {
   std::size_t meshMade = 0;
   std::size_t folds = 0;          // pairs sharing an edge
   std::size_t neckCrossings = 0;  // a child's quad against its own parent's (or a clone's against its source's)
+  std::size_t necksThroughParent = 0;  // of those, a child's quad in its neck or first band (throughParent); the rest
+                                       // lie farther along the child, where its skeleton runs back into the parent
   std::size_t meshMadeAtShallowJoints = 0;  // mesh-made pairs with shallowJoint set
   bool classified = false;        // false for a bare mesh: origins unknown
   double milliseconds = 0;
@@ -58,17 +61,18 @@ SelfIntersectionReport checkSelfIntersections(const QuadMesh& mesh);
 // mesh-made otherwise; folds and pairs within one stem are always mesh-made.
 SelfIntersectionReport checkSelfIntersections(const TreeMesh& tree, const Skeleton& skeleton);
 
-// The mesh-made pairs between a quad of a stem flagged in `stems` (one flag per skeleton stem) and another quad
+// The pairs a mesher must mend, mesh-made ones and necks through their own parent (throughParent, whatever made
+// them), between a quad of a stem flagged in `stems` (one flag per skeleton stem) and another quad
 // (of another stem, or of its own: a neck through its own tube), where one of the two lies in its stem's neck or
 // first band, or on the tip (last band and cap) of a stem bearing children, classified as above, sorted. Left
 // out: pairs of a clone with its source (which it leaves through its end), or sharing a corner (the quads around
 // every port: most of the work), and necks crowded by other stems (a thicket the skeleton made, where the search
 // would grow with the square of the stems). Over a BVH of runs of each stem's quads, on every core for a large
-// mesh, keeping only the mesh-made pairs as it goes: cheap enough to run after every build.
-std::vector<QuadPairHit> meshMadePairsOf(const TreeMesh& tree, const Skeleton& skeleton, const std::vector<bool>& stems);
-// The mesh-made pairs between one of `quads` (sorted; a few: the faces that closed twigs' ports) and any other
-// quad, classified as above, sorted.
-std::vector<QuadPairHit> meshMadePairsWith(const TreeMesh& tree, const Skeleton& skeleton, const std::vector<std::uint32_t>& quads);
+// mesh, keeping only those pairs as it goes: cheap enough to run after every build.
+std::vector<QuadPairHit> pairsToMendOf(const TreeMesh& tree, const Skeleton& skeleton, const std::vector<bool>& stems);
+// The pairs to mend (as above) between one of `quads` (sorted; a few: the faces that closed twigs' ports) and any
+// other quad, classified as above, sorted.
+std::vector<QuadPairHit> pairsToMendWith(const TreeMesh& tree, const Skeleton& skeleton, const std::vector<std::uint32_t>& quads);
 // The number the mesher must bring to 0: pairs of quads that intersect where the skeleton does not.
 std::size_t meshMadeIntersections(const TreeMesh& tree, const Skeleton& skeleton);
 

@@ -81,6 +81,9 @@ void printSummary(const Checked& c, const SelfIntersectionReport& r) {
   std::printf("  folds               %zu  (pairs sharing an edge)\n", r.folds);
   if (r.classified) {
     std::printf("  neck crossings      %zu  (a child against its own parent, a clone against its source)\n", r.neckCrossings);
+    std::printf("    through the parent %zu  (the child's neck or first band; the rest lie farther along the child, where its\n"
+                "                       skeleton runs back into its parent)\n",
+                r.necksThroughParent);
     if (!c.tree.fakedStems.empty()) {
       std::printf("  faked stems         %zu  (%s, not checked; --mesh-displaced meshes them)\n", c.tree.fakedStems.size(), kFakedStemsNote);
     }
@@ -120,6 +123,7 @@ void writeJson(const std::string& path, const CheckOptions& o, const Checked& c,
     if (r.classified) {
       w.field("skeletonMade", static_cast<std::int64_t>(r.skeletonMade)).field("meshMade", static_cast<std::int64_t>(r.meshMade));
       w.field("neckCrossings", static_cast<std::int64_t>(r.neckCrossings));
+      w.field("necksThroughParent", static_cast<std::int64_t>(r.necksThroughParent));
       w.field("meshMadeAtShallowJoints", static_cast<std::int64_t>(r.meshMadeAtShallowJoints));
       w.field("fakedStems", static_cast<std::int64_t>(c.tree.fakedStems.size()));
     }
@@ -132,7 +136,7 @@ void writeJson(const std::string& path, const CheckOptions& o, const Checked& c,
       w.field("levelA", stemLevel(c, h.stemA)).field("levelB", stemLevel(c, h.stemB));
       w.field("contact", quadContactName(h.contact)).field("relation", stemRelationName(h.relation));
       w.field("origin", pairOriginName(h.origin));
-      if (r.classified) w.field("reachA", h.reachA).field("reachB", h.reachB).field("shallowJoint", h.shallowJoint);
+      if (r.classified) w.field("reachA", h.reachA).field("reachB", h.reachB).field("shallowJoint", h.shallowJoint).field("throughParent", h.throughParent);
       w.key("point").vec3(h.point.x, h.point.y, h.point.z);
       w.endObject();
       if (w.pending() > (1u << 20)) w.flushTo(out);

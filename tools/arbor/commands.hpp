@@ -17,7 +17,7 @@ constexpr const char* kMeshDisplacedHelp =
     "could join only more than half a parent radius along (meshed from that far slab), thin twigs inside or shallow "
     "along their parent, twigs just before their parent splits or just past it inside another of its clones, twigs passing "
     "through a neighbouring branch's joint, twigs (and branches bearing only twigs, fronds a quarter of their parent's base radius thick, and clones as thin "
-    "that end a branch bearing nothing) whose neck or first band the mesh made cross another branch or their own tube (default: fake branches on their skeletons, as stubs)";
+    "that end a branch bearing nothing) whose neck or first band the mesh made cross another branch or their own tube, or crosses their own parent (default: fake branches on their skeletons, as stubs)";
 
 // What generate and check report as "faked stems" (each kind is listed in kMeshDisplacedHelp).
 constexpr const char* kFakedStemsNote = "twigs the mesh could not join near where they attach, or whose joint crossed another branch, with their clones: fake branches";
