@@ -252,6 +252,7 @@ TakenOut takeOut(TreeMesh& tree, const Skeleton& skeleton, const std::vector<int
 // first: one whose closed port would cross the mesh where the skeleton does not stays (a random graph's trunk face
 // crossed three of the trunk's own quads), since the skeleton made the pair it was taken for.
 std::size_t takeOutNecksThroughParents(TreeMesh& tree, const Skeleton& skeleton, const std::vector<int>& root, const std::vector<QuadPairHit>& hits) {
+  if (std::none_of(hits.begin(), hits.end(), [](const QuadPairHit& h) { return h.throughParent; })) return 0;
   const std::vector<int> twig = twigsOf(tree, skeleton, root);
   std::vector<int> culprits;
   for (const QuadPairHit& h : hits) {

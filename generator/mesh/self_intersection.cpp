@@ -217,17 +217,18 @@ class PairClassifier {
 };
 
 // Tests quads f and g (with their corners) and keeps the pair in `found` only when they meet and the mesh made it,
-// or it is a child's neck through its own parent (`neck`: per quad, in its stem's neck or first band); the lower
-// index goes first, as every search reports pairs.
+// or it is a child's neck through its own parent (throughParent(h) says, once classified); the lower index goes
+// first, as every search reports pairs.
+template <class ThroughParent>
 void keepIfToMend(const QuadCorners& cf, const QuadCorners& cg, std::uint32_t f, std::uint32_t g, PairClassifier& classifier,
-                  const Skeleton& skeleton, const std::vector<bool>& neck, std::vector<QuadPairHit>& found) {
+                  ThroughParent&& throughParent, std::vector<QuadPairHit>& found) {
   const std::size_t before = found.size();
   if (f < g) testPair(cf, cg, f, g, found);
   else testPair(cg, cf, g, f, found);
   if (found.size() == before) return;
   QuadPairHit& h = found.back();
   classifier.classify(h);
-  h.throughParent = neckThroughParent(skeleton, neck, h);
+  h.throughParent = throughParent(h);
   if (h.origin != PairOrigin::Mesh && !h.throughParent) found.pop_back();
 }
 
@@ -479,7 +480,7 @@ std::vector<QuadPairHit> pairsToMendOf(const TreeMesh& tree, const Skeleton& ske
         const std::uint32_t b = near[k];
         if (i == j && b <= a) continue;
         if (!quadBoxes[a].overlaps(quadBoxes[b]) || shareCorner(ca.index, nearCorners[k].index)) continue;
-        keepIfToMend(ca, nearCorners[k], a, b, classifier, skeleton, neck, found);
+        keepIfToMend(ca, nearCorners[k], a, b, classifier, [&](const QuadPairHit& h) { return neckThroughParent(skeleton, neck, h); }, found);
       }
     }
   };
@@ -503,7 +504,12 @@ std::vector<QuadPairHit> pairsToMendWith(const TreeMesh& tree, const Skeleton& s
   if (boxes.empty()) return {};
   const QuadBvh bvh = buildQuadBvh(boxes);
   PairClassifier classifier(tree, skeleton);
-  const std::vector<bool> neck = neckQuads(tree);
+  std::vector<bool> neck;  // worked out for the first pair of a child and its parent: most calls meet none
+  auto throughParent = [&](const QuadPairHit& h) {
+    if (h.relation != StemRelation::ParentChild) return false;
+    if (neck.empty()) neck = neckQuads(tree);
+    return neckThroughParent(skeleton, neck, h);
+  };
   std::vector<QuadPairHit> found;
   for (std::uint32_t g = 0; g < mesh.quads.size(); ++g) {
     forEachOverlap(bvh, boxOf(mesh, g), [&](std::uint32_t k) {
@@ -511,7 +517,7 @@ std::vector<QuadPairHit> pairsToMendWith(const TreeMesh& tree, const Skeleton& s
       // A pair of two listed quads once.
       if (f == g || shareCorner(mesh.quads[f], mesh.quads[g])) return;
       if (std::binary_search(quads.begin(), quads.end(), g) && g < f) return;
-      keepIfToMend(cornersOf(mesh, f), cornersOf(mesh, g), f, g, classifier, skeleton, neck, found);
+      keepIfToMend(cornersOf(mesh, f), cornersOf(mesh, g), f, g, classifier, throughParent, found);
     });
   }
   sortHits(found);
