@@ -39,7 +39,8 @@ struct SelfIntersectionReport {
   std::size_t folds = 0;          // pairs sharing an edge
   std::size_t neckCrossings = 0;  // a child's quad against its own parent's (or a clone's against its source's)
   std::size_t necksThroughParent = 0;  // of those, a child's quad in its neck or first band (throughParent); the rest
-                                       // lie farther along the child, where its skeleton runs back into the parent
+                                       // lie farther along the child, where its skeleton runs back into the parent or
+                                       // close along it
   std::size_t meshMadeAtShallowJoints = 0;  // mesh-made pairs with shallowJoint set
   bool classified = false;        // false for a bare mesh: origins unknown
   double milliseconds = 0;

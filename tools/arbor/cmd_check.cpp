@@ -82,7 +82,7 @@ void printSummary(const Checked& c, const SelfIntersectionReport& r) {
   if (r.classified) {
     std::printf("  neck crossings      %zu  (a child against its own parent, a clone against its source)\n", r.neckCrossings);
     std::printf("    through the parent %zu  (the child's neck or first band; the rest lie farther along the child, where its\n"
-                "                       skeleton runs back into its parent)\n",
+                "                       skeleton runs back into its parent or close along it)\n",
                 r.necksThroughParent);
     if (!c.tree.fakedStems.empty()) {
       std::printf("  faked stems         %zu  (%s, not checked; --mesh-displaced meshes them)\n", c.tree.fakedStems.size(), kFakedStemsNote);
