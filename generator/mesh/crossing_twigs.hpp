@@ -1,7 +1,7 @@
 #pragma once
 // Twigs whose quads cross another stem's where the two skeletons do not meet (mesh-made pairs, which issue 13
-// wants gone), or whose neck runs through their own parent (issue 13 wants none), are taken out of the built mesh and drawn as fake branches; each one's port in its parent is
-// closed again by the face the twig replaced.
+// wants gone), or whose neck runs through their own parent (issue 13 wants none), are taken out of the built mesh
+// and drawn as fake branches; each one's port in its parent is closed again by the face the twig replaced.
 #include <cstddef>
 #include <vector>
 
