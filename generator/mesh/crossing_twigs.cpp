@@ -152,14 +152,18 @@ struct TakenOut {
   std::vector<int> twigs;    // the families' roots
   std::vector<int> members;  // every stem of theirs that had quads, sorted
   std::vector<std::uint32_t> ports;  // the faces that closed their ports, in the mesh after, sorted
-  std::vector<int> portTwigs;        // per port, the twig whose port it closed
 };
 
-// Takes the listed twigs' quads out, closes each port, drops the vertices no quad uses any more; returns the
-// twigs taken out (those with a port to close; with `allOrNothing`, none unless every twig with quads has one).
-TakenOut takeOut(TreeMesh& tree, const Skeleton& skeleton, const std::vector<int>& twigs,
-                 bool allOrNothing = false) {
-  QuadMesh& mesh = tree.mesh;
+// What taking the listed twigs (sorted) out would do: per twig, the quads that go with it (its own, its clones' and
+// what grows from them), and the face that closes its port (none where one cannot: it stays).
+struct TakeOutPlan {
+  std::vector<std::vector<std::uint32_t>> quadsOf;
+  std::vector<std::optional<Quad>> ports;
+  std::vector<int> ownerOf;  // per quad, the twig (index into the list) it goes with, or -1
+};
+
+TakeOutPlan planTakeOut(const TreeMesh& tree, const Skeleton& skeleton, const std::vector<int>& twigs) {
+  const QuadMesh& mesh = tree.mesh;
   std::vector<std::uint32_t> uses(mesh.vertexCount(), 0);
   for (const Quad& q : mesh.quads) {
     for (std::uint32_t v : q) ++uses[v];
@@ -175,24 +179,33 @@ TakenOut takeOut(TreeMesh& tree, const Skeleton& skeleton, const std::vector<int
     }
     return found;
   };
-  auto twigOf = [&](std::uint32_t f) -> std::optional<std::size_t> {
+  TakeOutPlan plan;
+  plan.quadsOf.resize(twigs.size());
+  plan.ownerOf.assign(tree.quadStem.size(), -1);
+  for (std::uint32_t f = 0; f < tree.quadStem.size(); ++f) {
     const int s = tree.quadStem[f];
-    if (s < 0) return std::nullopt;
+    if (s < 0) continue;
     int& owner = takenWith[static_cast<std::size_t>(s)];
     if (owner == -2) owner = ownerOf(s);
-    if (owner < 0) return std::nullopt;
-    return static_cast<std::size_t>(owner);
-  };
-  std::vector<std::vector<std::uint32_t>> quadsOf(twigs.size());
-  for (std::uint32_t f = 0; f < tree.quadStem.size(); ++f) {
-    if (const auto t = twigOf(f)) quadsOf[*t].push_back(f);
+    if (owner < 0) continue;
+    plan.ownerOf[f] = owner;
+    plan.quadsOf[static_cast<std::size_t>(owner)].push_back(f);
   }
+  plan.ports.resize(twigs.size());
+  for (std::size_t t = 0; t < twigs.size(); ++t) plan.ports[t] = portFace(mesh, plan.quadsOf[t], uses);
+  return plan;
+}
+
+// Takes the listed twigs' quads out, closes each port, drops the vertices no quad uses any more; returns the
+// twigs taken out (those with a port to close; with `allOrNothing`, none unless every twig with quads has one).
+TakenOut takeOut(TreeMesh& tree, const Skeleton& skeleton, const std::vector<int>& twigs,
+                 bool allOrNothing = false) {
+  QuadMesh& mesh = tree.mesh;
+  const TakeOutPlan plan = planTakeOut(tree, skeleton, twigs);
   TakenOut out;
-  std::vector<std::optional<Quad>> ports(twigs.size());
   for (std::size_t t = 0; t < twigs.size(); ++t) {
-    ports[t] = portFace(mesh, quadsOf[t], uses);
-    if (ports[t]) out.twigs.push_back(twigs[t]);
-    if (allOrNothing && !ports[t] && !quadsOf[t].empty()) return TakenOut{};
+    if (plan.ports[t]) out.twigs.push_back(twigs[t]);
+    if (allOrNothing && !plan.ports[t] && !plan.quadsOf[t].empty()) return TakenOut{};
   }
   if (out.twigs.empty()) return out;
   // The port's face takes the place of the twig's first quad; the twig's other quads go.
@@ -202,18 +215,18 @@ TakenOut takeOut(TreeMesh& tree, const Skeleton& skeleton, const std::vector<int
   quadStem.reserve(mesh.quads.size());
   std::vector<int>& members = out.members;
   for (std::uint32_t f = 0; f < mesh.quads.size(); ++f) {
-    const auto t = twigOf(f);
-    if (!t || !ports[*t]) {
+    const int t = plan.ownerOf[f];
+    if (t < 0 || !plan.ports[static_cast<std::size_t>(t)]) {
       quads.push_back(mesh.quads[f]);
       quadStem.push_back(tree.quadStem[f]);
       continue;
     }
     members.push_back(tree.quadStem[f]);
-    if (quadsOf[*t].front() == f) {
+    const auto twig = static_cast<std::size_t>(t);
+    if (plan.quadsOf[twig].front() == f) {
       out.ports.push_back(static_cast<std::uint32_t>(quads.size()));
-      out.portTwigs.push_back(twigs[*t]);
-      quads.push_back(*ports[*t]);
-      quadStem.push_back(grownFrom(skeleton, twigs[*t]));
+      quads.push_back(*plan.ports[twig]);
+      quadStem.push_back(grownFrom(skeleton, twigs[twig]));
     }
   }
   std::sort(members.begin(), members.end());
@@ -248,9 +261,9 @@ TakenOut takeOut(TreeMesh& tree, const Skeleton& skeleton, const std::vector<int
   return out;
 }
 
-// Last, the twigs whose neck runs through their own parent (pairs left in `hits` with throughParent), tried on a copy
-// first: one whose closed port would cross the mesh where the skeleton does not stays (a random graph's trunk face
-// crossed three of the trunk's own quads), since the skeleton made the pair it was taken for.
+// Last, the twigs whose neck runs through their own parent (pairs left in `hits` with throughParent), each port's
+// face tried in place first: a twig whose closed port would cross the mesh where the skeleton does not stays (a
+// random graph's trunk face crossed three of the trunk's own quads), since the skeleton made the pair it was taken for.
 std::size_t takeOutNecksThroughParents(TreeMesh& tree, const Skeleton& skeleton, const std::vector<int>& root, const std::vector<QuadPairHit>& hits) {
   if (std::none_of(hits.begin(), hits.end(), [](const QuadPairHit& h) { return h.throughParent; })) return 0;
   const std::vector<int> twig = twigsOf(tree, skeleton, root);
@@ -261,24 +274,35 @@ std::size_t takeOutNecksThroughParents(TreeMesh& tree, const Skeleton& skeleton,
   std::sort(culprits.begin(), culprits.end());
   culprits.erase(std::unique(culprits.begin(), culprits.end()), culprits.end());
   if (culprits.empty()) return 0;
-  TreeMesh trial = tree;
-  const TakenOut tried = takeOut(trial, skeleton, culprits);
-  std::vector<int> crossing;  // twigs whose closed port crosses the mesh
-  const std::vector<QuadPairHit> atPorts = pairsToMendWith(trial, skeleton, tried.ports);
-  for (std::size_t k = 0; k < tried.ports.size(); ++k) {
-    const std::uint32_t port = tried.ports[k];
-    const bool crosses = std::any_of(atPorts.begin(), atPorts.end(), [&](const QuadPairHit& h) {
-      return h.origin == PairOrigin::Mesh && (h.a == port || h.b == port);
-    });
-    if (crosses) crossing.push_back(tried.portTwigs[k]);
+  // The faces that would close the ports, added for the search and taken off again; pairs with quads that go
+  // with a twig do not count.
+  const TakeOutPlan plan = planTakeOut(tree, skeleton, culprits);
+  const std::size_t n = tree.mesh.quads.size();
+  std::vector<std::uint32_t> faces;
+  std::vector<std::size_t> faceTwig;
+  for (std::size_t t = 0; t < culprits.size(); ++t) {
+    if (!plan.ports[t]) continue;
+    faces.push_back(static_cast<std::uint32_t>(tree.mesh.quads.size()));
+    faceTwig.push_back(t);
+    tree.mesh.quads.push_back(*plan.ports[t]);
+    tree.quadStem.push_back(grownFrom(skeleton, culprits[t]));
   }
-  if (crossing.empty()) {
-    tree = std::move(trial);
-    return tried.twigs.size();
+  const std::vector<QuadPairHit> atPorts = pairsToMendWith(tree, skeleton, faces);
+  tree.mesh.quads.resize(n);
+  tree.quadStem.resize(n);
+  std::vector<bool> crosses(culprits.size(), false);
+  auto goes = [&](std::uint32_t f) { return f < n && plan.ownerOf[f] >= 0 && plan.ports[static_cast<std::size_t>(plan.ownerOf[f])]; };
+  for (const QuadPairHit& h : atPorts) {
+    if (h.origin != PairOrigin::Mesh) continue;
+    for (const auto& [face, other] : {std::pair{h.a, h.b}, std::pair{h.b, h.a}}) {
+      if (face >= n && !goes(other)) crosses[faceTwig[face - n]] = true;
+    }
   }
-  std::sort(crossing.begin(), crossing.end());
-  std::erase_if(culprits, [&](int c) { return std::binary_search(crossing.begin(), crossing.end(), c); });
-  return culprits.empty() ? 0 : takeOut(tree, skeleton, culprits).twigs.size();
+  std::vector<int> kept;
+  for (std::size_t t = 0; t < culprits.size(); ++t) {
+    if (plan.ports[t] && !crosses[t]) kept.push_back(culprits[t]);
+  }
+  return kept.empty() ? 0 : takeOut(tree, skeleton, kept).twigs.size();
 }
 
 }  // namespace
