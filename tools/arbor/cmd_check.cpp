@@ -103,12 +103,13 @@ void printList(const Checked& c, const SelfIntersectionReport& r, std::size_t n)
   const std::size_t shown = std::min(n, r.hits.size());
   if (shown == 0) return;
   std::printf("  first %zu of %zu pairs (quad/stem/level, quad/stem/level, contact, stems, origin, point, distance from\n"
-              "  each stem's skeleton axis in its radii):\n", shown, r.hits.size());
+              "  each stem's skeleton axis in its radii; a neck through its own parent marked so):\n", shown, r.hits.size());
   for (std::size_t i = 0; i < shown; ++i) {
     const QuadPairHit& h = r.hits[i];
-    std::printf("    %u/%d/%d  %u/%d/%d  %s  %s  %s  (%.6g, %.6g, %.6g)  %.3g %.3g\n", h.a, h.stemA, stemLevel(c, h.stemA),
+    std::printf("    %u/%d/%d  %u/%d/%d  %s  %s  %s  (%.6g, %.6g, %.6g)  %.3g %.3g%s\n", h.a, h.stemA, stemLevel(c, h.stemA),
                 h.b, h.stemB, stemLevel(c, h.stemB), quadContactName(h.contact), stemRelationName(h.relation),
-                pairOriginName(h.origin), h.point.x, h.point.y, h.point.z, h.reachA, h.reachB);
+                pairOriginName(h.origin), h.point.x, h.point.y, h.point.z, h.reachA, h.reachB,
+                h.throughParent ? "  neck through its parent" : "");
   }
 }
 
