@@ -322,13 +322,13 @@ bool takeOutTwigs(TreeMesh& tree, const Skeleton& skeleton, const std::vector<in
   return true;
 }
 
-std::size_t fakeCrossingTwigs(TreeMesh& tree, const Skeleton& skeleton) {
+std::size_t fakeCrossingTwigs(TreeMesh& tree, const Skeleton& skeleton, CrossingsLeft* left) {
   const std::vector<int> root = familyRoots(skeleton);
-  // One search, for every stem that is a twig or becomes one once its twigs are taken out: the second pass only
-  // looks again at the pairs found.
+  // One search, for every stem that is a twig or becomes one once its twigs are taken out (or every stem, to say
+  // what is left): the second pass only looks again at the pairs found.
   const std::vector<int> deepTwigs = twigsOf(tree, skeleton, root, kMaxHeight + 1);
   std::vector<bool> deep(deepTwigs.size());
-  for (std::size_t i = 0; i < deep.size(); ++i) deep[i] = deepTwigs[i] >= 0;
+  for (std::size_t i = 0; i < deep.size(); ++i) deep[i] = left || deepTwigs[i] >= 0;
   std::vector<QuadPairHit> hits = pairsToMendOf(tree, skeleton, deep);
   auto meshMade = [](const QuadPairHit& h) { return h.origin == PairOrigin::Mesh; };
   std::size_t taken = 0;
@@ -352,6 +352,17 @@ std::size_t fakeCrossingTwigs(TreeMesh& tree, const Skeleton& skeleton) {
       const std::vector<QuadPairHit> fresh = pairsToMendWith(tree, skeleton, out.ports);
       hits.insert(hits.end(), fresh.begin(), fresh.end());
     }
+  }
+  if (left) {
+    *left = CrossingsLeft{};
+    for (const QuadPairHit& h : hits) {
+      if (!meshMade(h)) continue;
+      ++left->pairs;
+      left->necks.push_back(h.reachA >= h.reachB ? h.stemA : h.stemB);
+    }
+    std::sort(left->necks.begin(), left->necks.end());
+    left->necks.erase(std::unique(left->necks.begin(), left->necks.end()), left->necks.end());
+    std::erase_if(left->necks, [](int s) { return s < 0; });
   }
   taken += takeOutNecksThroughParents(tree, skeleton, root, hits);
   if (taken > 0) computeNormals(tree.mesh);

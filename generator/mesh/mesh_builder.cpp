@@ -75,6 +75,10 @@ constexpr std::size_t kBoxHubMost = 64;
 
 // Passes of faking the twigs an earlier pass left past kFarChild.
 constexpr int kFarTwigPasses = 3;
+// A stem whose neck still crosses another where the skeletons do not (no twig to take out) is meshed again with its
+// collar this much nearer its port: a shallow limb's collar, two child radii off its parent, reached into a limb
+// passing the parent (the CA black oak file's limb 350 at seed 2, 8 pairs; at half the distance, none).
+constexpr double kNearCollar = 0.5;
 // A twig (level 2 on) passing within this many radii of a neighbouring stem's axis at that stem's joint, plus its
 // own radius, is a fake branch: a collar is placed at twice the child's radius. All trees' mesh-made pairs at seeds
 // 1-3 1,105 -> 973 and neck crossings 4,950 -> 2,735, quads 0.8 % fewer; at 2.5 radii 954 but quads 1.2 % fewer;
@@ -114,7 +118,8 @@ struct PortStart {
 class Builder {
  public:
   // `fake`: stems to draw as fake branches whatever the rules say (the far twigs of an earlier pass).
-  Builder(const Skeleton& s, const MeshOptions& o, TreeMesh& out, const std::vector<int>& fake) : sk_(s), opt_(o), out_(out), fake_(fake) {}
+  Builder(const Skeleton& s, const MeshOptions& o, TreeMesh& out, const std::vector<int>& fake, const std::vector<int>& nearCollars)
+      : sk_(s), opt_(o), out_(out), fake_(fake), nearCollars_(nearCollars) {}
 
   void run() {
     const std::size_t vertices = out_.mesh.positions.capacity();
@@ -175,6 +180,7 @@ class Builder {
   std::vector<std::pair<Vec3, Vec3>> jointAxis_;  // per child: its axis from its attach node to where it clears its parent
   std::vector<double> clearance_;          // per child: parentClearance, the arc length where it clears its parent
   const std::vector<int>& fake_;            // sorted: stems faked whatever the rules say
+  const std::vector<int>& nearCollars_;     // sorted: stems whose collar candidates stand nearer their port
   std::vector<bool> faked_;                // per stem: in out_.fakedStems
   std::vector<Vec3> uvwSum_;
   std::vector<int> uvwCount_;
@@ -511,7 +517,9 @@ class Builder {
       return TubeStart{unclear, clearOfParent(poly, start, frame, corners, unclear, clearStep)};
     };
     std::optional<TubeStart> chosenTube;  // the chosen collar's, where the choice worked it out
-    for (const auto& [dir, scale] : candidates) {
+    const double nearness = std::binary_search(nearCollars_.begin(), nearCollars_.end(), stem) ? kNearCollar : 1.0;
+    for (const auto& [dir, farness] : candidates) {
+      const double scale = farness * nearness;
       const Vec3 c = center + dir * (e0 * scale);
       // A child leaving straight against its port (dir = -d) leaves along the port first: backward connection.
       const RingFrame frame = transportFrame(port.frame, directionOr(dir + d, dir));
@@ -2028,7 +2036,8 @@ class Builder {
   }
 };
 
-TreeMesh buildOnce(const Skeleton& skeleton, const MeshOptions& options, const std::vector<int>& fake, std::vector<int>* farTwigs) {
+TreeMesh buildOnce(const Skeleton& skeleton, const MeshOptions& options, const std::vector<int>& fake, const std::vector<int>& nearCollars,
+                   std::vector<int>* farTwigs) {
   TreeMesh out;
   // About five quads (and as many vertices) per skeleton node; growing these vectors would cost page faults.
   const std::size_t vertices = std::min(skeleton.nodes.size() * 6, options.maxQuads + 8);
@@ -2039,7 +2048,7 @@ TreeMesh buildOnce(const Skeleton& skeleton, const MeshOptions& options, const s
   out.mesh.quads.reserve(vertices);
   out.quadStem.reserve(vertices);
   out.rings.reserve(vertices / 4);
-  Builder builder(skeleton, options, out, fake);
+  Builder builder(skeleton, options, out, fake, nearCollars);
   builder.run();
   if (farTwigs) *farTwigs = builder.farTwigs();
   // Degenerate geometry must never leave here as NaN vertices (exports and the GPU would take them silently).
@@ -2051,20 +2060,16 @@ TreeMesh buildOnce(const Skeleton& skeleton, const MeshOptions& options, const s
   return out;
 }
 
-}  // namespace
-
-TreeMesh buildTreeMesh(const Skeleton& skeleton, const MeshOptions& options) {
-  // A twig the first pass left past the joint floor is a fake branch, and the tree meshed again without it: its
-  // neighbours' connections change, so the second pass may leave a few more (at most 1 to 3 twigs a tree,
-  // measured). Those are taken out of that mesh rather than meshing it all again, their neighbours keeping their
-  // places (a 100,000-internode graph was meshed four times); a further pass only where one cannot be.
+// The mesh with the twigs an earlier pass left past the joint floor faked (see buildTreeMesh), `nearCollars`' collars
+// nearer their ports; `left` receives the crossings the crossing-twig pass could not take out.
+TreeMesh buildWithTwigsFaked(const Skeleton& skeleton, const MeshOptions& options, const std::vector<int>& nearCollars, CrossingsLeft* left) {
   std::vector<int> fake, far;
   for (int pass = 0;; ++pass) {
-    TreeMesh out = buildOnce(skeleton, options, fake, pass < kFarTwigPasses ? &far : nullptr);
+    TreeMesh out = buildOnce(skeleton, options, fake, nearCollars, pass < kFarTwigPasses ? &far : nullptr);
     if (pass >= 1 && !far.empty() && takeOutTwigs(out, skeleton, far)) far.clear();
     if (pass == kFarTwigPasses || far.empty()) {
       // Last, the twigs whose quads still cross another stem's where the skeletons do not meet.
-      if (options.fakeDisplaced && options.fakeCrossingTwigs) fakeCrossingTwigs(out, skeleton);
+      if (options.fakeDisplaced && options.fakeCrossingTwigs) fakeCrossingTwigs(out, skeleton, left);
       // Once, on the mesh as it leaves (taking twigs out computes them for what is left).
       if (out.mesh.normals.size() != out.mesh.positions.size()) computeNormals(out.mesh);
       return out;
@@ -2073,6 +2078,23 @@ TreeMesh buildTreeMesh(const Skeleton& skeleton, const MeshOptions& options) {
     std::set_union(fake.begin(), fake.end(), far.begin(), far.end(), std::back_inserter(more));
     fake = std::move(more);
   }
+}
+
+}  // namespace
+
+TreeMesh buildTreeMesh(const Skeleton& skeleton, const MeshOptions& options) {
+  // A twig the first pass left past the joint floor is a fake branch, and the tree meshed again without it: its
+  // neighbours' connections change, so the second pass may leave a few more (at most 1 to 3 twigs a tree,
+  // measured). Those are taken out of that mesh rather than meshing it all again, their neighbours keeping their
+  // places (a 100,000-internode graph was meshed four times); a further pass only where one cannot be.
+  CrossingsLeft left;
+  TreeMesh out = buildWithTwigsFaked(skeleton, options, {}, &left);
+  if (left.necks.empty()) return out;
+  // Necks crossing other stems that no take-out could mend: once more with those collars nearer their ports, kept
+  // only where that leaves fewer such crossings.
+  CrossingsLeft nearer;
+  TreeMesh again = buildWithTwigsFaked(skeleton, options, left.necks, &nearer);
+  return nearer.pairs < left.pairs ? again : out;
 }
 
 }  // namespace arbor
