@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cstdio>
 
+#include <optional>
 #include <random>
 #include <set>
 
@@ -728,6 +729,14 @@ TakeOut plantTakeOut(const std::string& name) {
   return t;
 }
 
+// The skeleton an Arbaro species file grows at `seed`; none where the files are missing (arbaroSpeciesFiles says why).
+std::optional<Skeleton> arbaroSkeleton(const std::string& file, std::uint64_t seed) {
+  if (test::arbaroSpeciesFiles(ARBOR_SPECIES_DIR).empty()) return std::nullopt;
+  GrowthOptions o;
+  o.seed = seed;
+  return generateSkeleton(loadSpeciesFile(std::string(ARBOR_SPECIES_DIR) + "/" + file + ".xml"), o);
+}
+
 }  // namespace
 
 TEST_CASE("a level-1 twig high on a tapering stem is thin by that stem's base: a crossing one is a fake branch", "[mesh][self-intersection]") {
@@ -752,10 +761,9 @@ TEST_CASE("a child leaving its inset straight for its skeleton stands clear of i
   // The cottonwood file at seed 1: limb 29 leaves trunk 3 at 48 degrees through an inset. Its first cross section
   // stood where the band from the inset first cleared the trunk, a corner 0.1 mm off the trunk's 1.6 m band: the
   // next band crossed it (2 mesh-made pairs). One step further on it stands clear.
-  if (test::arbaroSpeciesFiles(ARBOR_SPECIES_DIR).empty()) return;  // it said why
-  GrowthOptions o;
-  o.seed = 1;
-  const Skeleton skeleton = generateSkeleton(loadSpeciesFile(std::string(ARBOR_SPECIES_DIR) + "/eastern_cottonwood.xml"), o);
+  const std::optional<Skeleton> grown = arbaroSkeleton("eastern_cottonwood", 1);
+  if (!grown) return;  // it said why
+  const Skeleton& skeleton = *grown;
   REQUIRE(skeleton.stems.size() > 29);
   REQUIRE(skeleton.stems[29].parentStem == 3);
   const TreeMesh tree = buildTreeMesh(skeleton);
@@ -785,10 +793,9 @@ TEST_CASE("a twig whose neck runs through its own parent is a fake branch, and t
   // its collar to its tip, cut across the branch (109 pairs of a child's neck or first band with its own parent,
   // all skeleton-made by the classifier, since the two stems' wood lies within two radii there). Its other 237
   // parent crossings lie farther along children whose skeletons run back into their parents.
-  if (test::arbaroSpeciesFiles(ARBOR_SPECIES_DIR).empty()) return;  // it said why
-  GrowthOptions o;
-  o.seed = 2;
-  const Skeleton skeleton = generateSkeleton(loadSpeciesFile(std::string(ARBOR_SPECIES_DIR) + "/tamarack.xml"), o);
+  const std::optional<Skeleton> grown = arbaroSkeleton("tamarack", 2);
+  if (!grown) return;  // it said why
+  const Skeleton& skeleton = *grown;
   MeshOptions keep;
   keep.fakeCrossingTwigs = false;
   const TreeMesh before = buildTreeMesh(skeleton, keep);
@@ -829,10 +836,9 @@ TEST_CASE("a limb's neck crossing another limb where no twig can go is meshed ag
   // two child radii off the clone, reached into limb 162 of another clone passing 6 cm from the clone's axis (8
   // mesh-made pairs, the last of all trees at seeds 1-3). Both bear twenty children, so neither is a twig to take
   // out. Meshed again with that collar half as far out, none.
-  if (test::arbaroSpeciesFiles(ARBOR_SPECIES_DIR).empty()) return;  // it said why
-  GrowthOptions o;
-  o.seed = 2;
-  const Skeleton skeleton = generateSkeleton(loadSpeciesFile(std::string(ARBOR_SPECIES_DIR) + "/ca_black_oak.xml"), o);
+  const std::optional<Skeleton> grown = arbaroSkeleton("ca_black_oak", 2);
+  if (!grown) return;  // it said why
+  const Skeleton& skeleton = *grown;
   REQUIRE(skeleton.stems.size() > 350);
   MeshOptions keep;
   keep.fakeCrossingTwigs = false;
