@@ -117,7 +117,8 @@ struct PortStart {
 
 class Builder {
  public:
-  // `fake`: stems to draw as fake branches whatever the rules say (the far twigs of an earlier pass).
+  // `fake`: stems to draw as fake branches whatever the rules say (the far twigs of an earlier pass); `nearCollars`:
+  // stems whose collar candidates stand kNearCollar as far from their port (necks an earlier mesh left crossing).
   Builder(const Skeleton& s, const MeshOptions& o, TreeMesh& out, const std::vector<int>& fake, const std::vector<int>& nearCollars)
       : sk_(s), opt_(o), out_(out), fake_(fake), nearCollars_(nearCollars) {}
 
