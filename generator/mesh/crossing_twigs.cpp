@@ -103,6 +103,18 @@ int culprit(const QuadPairHit& h, const std::vector<int>& twig, const Skeleton& 
   return b;
 }
 
+// The twigs, sorted and each once, that the pairs `taken(h)` picks take out.
+template <class Taken>
+std::vector<int> culpritsOf(const std::vector<QuadPairHit>& hits, const std::vector<int>& twig, const Skeleton& skeleton, Taken&& taken) {
+  std::vector<int> culprits;
+  for (const QuadPairHit& h : hits) {
+    if (const int c = taken(h) ? culprit(h, twig, skeleton) : -1; c >= 0) culprits.push_back(c);
+  }
+  std::sort(culprits.begin(), culprits.end());
+  culprits.erase(std::unique(culprits.begin(), culprits.end()), culprits.end());
+  return culprits;
+}
+
 // The face that closes a twig's port once its quads are gone: its quads' four edges that no other of its quads
 // shares, in order (the parent's face there, as the twig's first band ran on from it). None when the twig meets
 // the rest of the mesh otherwise, or one of its inner vertices is also another stem's.
@@ -266,13 +278,8 @@ TakenOut takeOut(TreeMesh& tree, const Skeleton& skeleton, const std::vector<int
 // random graph's trunk face crossed three of the trunk's own quads), since the skeleton made the pair it was taken for.
 std::size_t takeOutNecksThroughParents(TreeMesh& tree, const Skeleton& skeleton, const std::vector<int>& root, const std::vector<QuadPairHit>& hits) {
   if (std::none_of(hits.begin(), hits.end(), [](const QuadPairHit& h) { return h.throughParent; })) return 0;
-  const std::vector<int> twig = twigsOf(tree, skeleton, root);
-  std::vector<int> culprits;
-  for (const QuadPairHit& h : hits) {
-    if (const int c = h.throughParent ? culprit(h, twig, skeleton) : -1; c >= 0) culprits.push_back(c);
-  }
-  std::sort(culprits.begin(), culprits.end());
-  culprits.erase(std::unique(culprits.begin(), culprits.end()), culprits.end());
+  const std::vector<int> culprits =
+      culpritsOf(hits, twigsOf(tree, skeleton, root), skeleton, [](const QuadPairHit& h) { return h.throughParent; });
   if (culprits.empty()) return 0;
   // The faces that would close the ports, added for the search and taken off again; pairs with quads that go
   // with a twig do not count.
@@ -333,13 +340,7 @@ std::size_t fakeCrossingTwigs(TreeMesh& tree, const Skeleton& skeleton, Crossing
   auto meshMade = [](const QuadPairHit& h) { return h.origin == PairOrigin::Mesh; };
   std::size_t taken = 0;
   for (int pass = 0; pass < kPasses && std::any_of(hits.begin(), hits.end(), meshMade); ++pass) {
-    const std::vector<int> twig = twigsOf(tree, skeleton, root);
-    std::vector<int> culprits;
-    for (const QuadPairHit& h : hits) {
-      if (const int c = meshMade(h) ? culprit(h, twig, skeleton) : -1; c >= 0) culprits.push_back(c);
-    }
-    std::sort(culprits.begin(), culprits.end());
-    culprits.erase(std::unique(culprits.begin(), culprits.end()), culprits.end());
+    const std::vector<int> culprits = culpritsOf(hits, twigsOf(tree, skeleton, root), skeleton, meshMade);
     if (culprits.empty()) break;
     const TakenOut out = takeOut(tree, skeleton, culprits);
     if (out.twigs.empty()) break;

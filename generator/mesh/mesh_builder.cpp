@@ -2061,8 +2061,11 @@ TreeMesh buildOnce(const Skeleton& skeleton, const MeshOptions& options, const s
   return out;
 }
 
-// The mesh with the twigs an earlier pass left past the joint floor faked (see buildTreeMesh), `nearCollars`' collars
-// nearer their ports; `left` receives the crossings the crossing-twig pass could not take out.
+// The mesh with `nearCollars`' collars nearer their ports; `left` receives the crossings the crossing-twig pass could
+// not take out. A twig the first pass left past the joint floor is a fake branch, and the tree meshed again without
+// it: its neighbours' connections change, so the second pass may leave a few more (at most 1 to 3 twigs a tree,
+// measured). Those are taken out of that mesh rather than meshing it all again, their neighbours keeping their
+// places (a 100,000-internode graph was meshed four times); a further pass only where one cannot be.
 TreeMesh buildWithTwigsFaked(const Skeleton& skeleton, const MeshOptions& options, const std::vector<int>& nearCollars, CrossingsLeft* left) {
   std::vector<int> fake, far;
   for (int pass = 0;; ++pass) {
@@ -2084,10 +2087,6 @@ TreeMesh buildWithTwigsFaked(const Skeleton& skeleton, const MeshOptions& option
 }  // namespace
 
 TreeMesh buildTreeMesh(const Skeleton& skeleton, const MeshOptions& options) {
-  // A twig the first pass left past the joint floor is a fake branch, and the tree meshed again without it: its
-  // neighbours' connections change, so the second pass may leave a few more (at most 1 to 3 twigs a tree,
-  // measured). Those are taken out of that mesh rather than meshing it all again, their neighbours keeping their
-  // places (a 100,000-internode graph was meshed four times); a further pass only where one cannot be.
   CrossingsLeft left;
   TreeMesh out = buildWithTwigsFaked(skeleton, options, {}, &left);
   if (left.necks.empty()) return out;
