@@ -21,15 +21,16 @@ struct JointStats {
   std::size_t beforeFarTwigs = 0;
   double worstOffset = 0, worstPast = 0;  // worstPast in stem lengths
   double worstOnTrunkClone = 0;  // of the limbs attached before a trunk clone's tube begins
+  double worstBefore = 0;        // of every child attached before its parent's tube begins
 };
 
 // Children attached before their parent's tube begins (inside or against the grandparent, where the parent
 // has no surface) join its first slab and are counted apart; every other child is held to 1.5 parent radii.
-JointStats jointStats(const SpeciesParams& p, std::uint64_t seed) {
+JointStats jointStats(const SpeciesParams& p, std::uint64_t seed, const MeshOptions& options = {}) {
   GrowthOptions o;
   o.seed = seed;
   const Skeleton s = generateSkeleton(p, o);
-  const TreeMesh tree = buildTreeMesh(s);
+  const TreeMesh tree = buildTreeMesh(s, options);
   JointStats j;
   const std::vector<ChildPlacement> placements = childPlacements(s, tree);
   // A stem with a meshed child, and every stem it is a clone of, is a branch; the rest are twigs. A branch with a
@@ -52,6 +53,7 @@ JointStats jointStats(const SpeciesParams& p, std::uint64_t seed) {
     if (c.beforeTube) {
       ++j.before;
       j.beforeFarTwigs += c.offset > 1.5 && fakeable(c.stem) ? 1 : 0;
+      j.worstBefore = std::max(j.worstBefore, c.offset);
       const SkeletonStem& parent = s.stems[static_cast<std::size_t>(c.parentStem)];
       if (parent.cloneOf >= 0 && parent.level == 0) j.worstOnTrunkClone = std::max(j.worstOnTrunkClone, c.offset);
       continue;
@@ -73,8 +75,8 @@ JointStats jointStats(const SpeciesParams& p, std::uint64_t seed) {
 
 std::string describe(const std::string& name, std::uint64_t seed, const JointStats& j) {
   char line[300];
-  std::snprintf(line, sizeof line, "%s seed %llu: %zu children (%zu before the tube, %zu of them fakeable beyond 1.5 radii), %zu beyond 1.5 radii (worst %.2f); %zu tips, %zu past (worst %.3f lengths)",
-                name.c_str(), static_cast<unsigned long long>(seed), j.children, j.before, j.beforeFarTwigs, j.far, j.worstOffset, j.tips, j.past, j.worstPast);
+  std::snprintf(line, sizeof line, "%s seed %llu: %zu children (%zu before the tube, worst %.2f, %zu of them fakeable beyond 1.5 radii), %zu beyond 1.5 radii (worst %.2f); %zu tips, %zu past (worst %.3f lengths)",
+                name.c_str(), static_cast<unsigned long long>(seed), j.children, j.before, j.worstBefore, j.beforeFarTwigs, j.far, j.worstOffset, j.tips, j.past, j.worstPast);
   return line;
 }
 
@@ -94,6 +96,21 @@ TEST_CASE("every preset's children connect within 1.5 parent radii of their atta
       // attachment is a fake branch instead: what is left so far along is a trunk's limb.
       CHECK(j.beforeFarTwigs == 0);
     }
+  }
+}
+
+TEST_CASE("a trunk clone bearing a limb near its split has its collar nearer its port: the limb's slab is at its attachment", "[mesh][joints]") {
+  // The CA black oak preset splits its trunk in three, and each clone bears a limb 3.2 of its radii past the split,
+  // before its tube begins: with the collar where any clone's stands, that limb's slab (the clone's first) sat 2.6
+  // clone radii along from it at every seed.
+  MeshOptions usual;
+  usual.nearEarlyCloneCollars = false;
+  for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+    const JointStats near = jointStats(test::loadPreset("ca-black-oak"), seed), far = jointStats(test::loadPreset("ca-black-oak"), seed, usual);
+    INFO(describe("ca-black-oak", seed, near) << "; " << describe("usual collars", seed, far));
+    CHECK(near.worstOnTrunkClone <= 1.5);
+    CHECK(near.worstBefore <= 1.5);
+    CHECK(far.worstOnTrunkClone > 2.0);
   }
 }
 

@@ -61,6 +61,10 @@ constexpr double kThinTwig = 0.5;
 constexpr double kBeforeSplit = 4.0;
 // The joint floor (docs/mesh.md): a child's first ring at most this many parent radii along from its attachment.
 constexpr double kFarChild = 1.5;
+// A trunk clone bearing a child within this many of its radii from its start has its collar candidates at
+// kEarlyCloneCollar of their distance from its port.
+constexpr double kEarlyChild = 4.0;
+constexpr double kEarlyCloneCollar = 0.4;
 // A slab whose stem turns by more than this (cosine between its ends' directions: 30 degrees) faces along its chord.
 constexpr double kSlabTurn = 0.866;
 // A stem's last slab at most this many of its radii before its tip gives its top to the child most aligned with the
@@ -518,7 +522,14 @@ class Builder {
       return TubeStart{unclear, clearOfParent(poly, start, frame, corners, unclear, clearStep)};
     };
     std::optional<TubeStart> chosenTube;  // the chosen collar's, where the choice worked it out
-    const double nearness = std::binary_search(nearCollars_.begin(), nearCollars_.end(), stem) ? kNearCollar : 1.0;
+    // A trunk clone bearing a limb within a few of its radii: its collar nearer, so that its tube, and that limb's
+    // slab, begin nearer the split (the CA black oak preset's limbs sat 2.6 clone radii along at every seed; with
+    // every clone's so, two twig-bearing clones of the willow file folded at seed 3).
+    const bool earlyClone = opt_.nearEarlyCloneCollars && clone && sk_.stems[static_cast<std::size_t>(stem)].level == 0 &&
+                            attachedWithin(stem, poly, kEarlyChild * rc);
+    const double nearness = earlyClone                                                             ? kEarlyCloneCollar
+                            : std::binary_search(nearCollars_.begin(), nearCollars_.end(), stem) ? kNearCollar
+                                                                                                 : 1.0;
     for (const auto& [dir, farness] : candidates) {
       const double scale = farness * nearness;
       const Vec3 c = center + dir * (e0 * scale);
@@ -1657,6 +1668,18 @@ class Builder {
       if (glm::dot(first - n.world.position, axis) < 0.0) return false;
     }
     return true;
+  }
+
+  // Whether a meshed child of the stem attaches within arc length `arc` of its start.
+  bool attachedWithin(int stem, const StemPolyline& poly, double arc) const {
+    const int from = sk_.stems[static_cast<std::size_t>(stem)].attachNode;  // its parent's children there are not its own
+    for (int i = 0; i < poly.pointCount() && poly.arcLength(i) < arc; ++i) {
+      if (poly.node(i) == from) continue;
+      for (int c : stemsAt_[static_cast<std::size_t>(poly.node(i))]) {
+        if (sk_.stems[static_cast<std::size_t>(c)].cloneOf < 0) return true;
+      }
+    }
+    return false;
   }
 
   // The cross section between rings a and b at t (0..1): its corners on the band between them, moved by `shift`.

@@ -21,6 +21,9 @@ struct MeshOptions {
   // Children attached along a long neck (before their parent's tube begins) leave through that neck where they
   // attach; off: they crowd the parent's first slab, however far along that is.
   bool neckPorts = true;
+  // A trunk clone bearing a child within four of its radii from the split has its collar at 0.4 of the usual distance
+  // from its port, so that its tube and that child's slab begin near the split; off: as any clone's.
+  bool nearEarlyCloneCollars = true;
   // A twig (no meshed child, nor any of its clones), or a branch two or more levels from its trunk that bears only
   // twigs, that its parent can join only more than half a parent radius (or half its own length) along from where it
   // attaches (where the parent has no tube yet, inside or against its own parent) is drawn, with its clones and
