@@ -295,3 +295,23 @@ TEST_CASE("an interrupted write leaves no partial file behind", "[cli][refusal]"
   CHECK(WTERMSIG(status) == SIGTERM);
   CHECK_FALSE(fs::exists(partial));
 }
+
+TEST_CASE("an OBJ refused while meshing leaves nothing in its folder: no maps, no material, no partial file", "[cli][refusal]") {
+  // The maps and the material go beside the OBJ only once the tree is built, the OBJ last.
+  const fs::path folder = arbor::test::tempPath("refused-obj");
+  fs::remove_all(folder);
+  fs::create_directories(folder);
+  checkRefused(runBounded("generate palm --max-ring-distance 0.0001 --out " + (folder / "r.obj").string()), {"more than 2500000 quads"});
+  std::vector<std::string> left;
+  for (const fs::directory_entry& entry : fs::directory_iterator(folder)) left.push_back(entry.path().filename().string());
+  INFO(left.size() << " files left, the first " << (left.empty() ? std::string() : left.front()));
+  CHECK(left.empty());
+  // Given room, the same command writes the OBJ with its material and three maps.
+  REQUIRE(run("generate palm --quiet --out " + (folder / "r.obj").string()).exitCode == 0);
+  std::size_t written = 0;
+  for (const fs::directory_entry& entry : fs::directory_iterator(folder)) {
+    ++written;
+    CHECK(entry.path().filename().string().find(".partial-") == std::string::npos);
+  }
+  CHECK(written == 5);
+}
