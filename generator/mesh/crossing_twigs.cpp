@@ -98,7 +98,7 @@ int culprit(const QuadPairHit& h, const std::vector<int>& twig, const Skeleton& 
   const int a = h.stemA >= 0 ? twig[static_cast<std::size_t>(h.stemA)] : -1;
   const int b = h.stemB >= 0 ? twig[static_cast<std::size_t>(h.stemB)] : -1;
   // A neck through its own parent: the child's.
-  if (h.throughParent) return skeleton.stems[static_cast<std::size_t>(h.stemA)].parentStem == h.stemB ? a : b;
+  if (h.throughParent) return childIsA(h, skeleton) ? a : b;
   if (a >= 0 && (b < 0 || h.reachA >= h.reachB)) return a;
   return b;
 }

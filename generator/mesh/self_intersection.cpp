@@ -95,8 +95,7 @@ StemRelation relationOf(const Skeleton& skeleton, int a, int b) {
 // Whether a pair is a child's neck (or first band) through its own parent: the child's quad is on `neck`.
 bool neckThroughParent(const Skeleton& skeleton, const std::vector<bool>& neck, const QuadPairHit& h) {
   if (h.relation != StemRelation::ParentChild) return false;
-  const bool aIsChild = skeleton.stems[static_cast<std::size_t>(h.stemA)].parentStem == h.stemB;
-  return neck[aIsChild ? h.a : h.b];
+  return neck[childIsA(h, skeleton) ? h.a : h.b];
 }
 
 // Both stems' skeletons reach the point, or their wood (at the size of the mesh's corners) overlaps within two
@@ -523,6 +522,8 @@ std::vector<QuadPairHit> pairsToMendWith(const TreeMesh& tree, const Skeleton& s
   sortHits(found);
   return found;
 }
+
+bool childIsA(const QuadPairHit& h, const Skeleton& skeleton) { return skeleton.stems[static_cast<std::size_t>(h.stemA)].parentStem == h.stemB; }
 
 std::size_t meshMadeIntersections(const TreeMesh& tree, const Skeleton& skeleton) {
   return checkSelfIntersections(tree, skeleton).meshMade;

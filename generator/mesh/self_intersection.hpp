@@ -74,6 +74,8 @@ std::vector<QuadPairHit> pairsToMendOf(const TreeMesh& tree, const Skeleton& ske
 // The pairs to mend (as above) between one of `quads` (sorted; a few: the faces that closed twigs' ports) and any
 // other quad, classified as above, sorted.
 std::vector<QuadPairHit> pairsToMendWith(const TreeMesh& tree, const Skeleton& skeleton, const std::vector<std::uint32_t>& quads);
+// Of a pair of a child and its own parent, whether stemA is the child.
+bool childIsA(const QuadPairHit& h, const Skeleton& skeleton);
 // The number the mesher must bring to 0: pairs of quads that intersect where the skeleton does not.
 std::size_t meshMadeIntersections(const TreeMesh& tree, const Skeleton& skeleton);
 
