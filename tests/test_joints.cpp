@@ -2,9 +2,12 @@
 // along the parent, and no stem's tip ring past its skeleton tip by more than the tip radius.
 #include <catch2/catch.hpp>
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <cstdio>
 
 #include "growth/weber_penn/weber_penn.hpp"
+#include "mesh/connection.hpp"
 #include "mesh/joint_checks.hpp"
 #include "mesh/tree_mesh.hpp"
 #include "growth/weber_penn/species_io.hpp"
@@ -112,6 +115,36 @@ TEST_CASE("a trunk clone bearing a limb near its split has its collar nearer its
     CHECK(near.worstBefore <= 1.5);
     CHECK(far.worstOnTrunkClone > 2.0);
   }
+}
+
+TEST_CASE("children heading straight for a corner of their parent take its two sides in turn", "[mesh][joints]") {
+  // A cross section with corners on +x, +y, -x, -y: side k lies between corners k and k + 1.
+  const double h = std::sqrt(0.5);
+  const std::array<Vec3, 4> normals{Vec3(h, h, 0), Vec3(-h, h, 0), Vec3(-h, -h, 0), Vec3(h, -h, 0)};
+  const Vec3 axis(0, 0, 1);
+  const std::array<bool, 4> all{true, true, true, true};
+  auto sideOf = [&](const Vec3& direction, CornerTurns* turns, const std::array<bool, 4>& allowed) {
+    const PortAssignment a = assignPorts(normals, axis, {PortRequest{glm::normalize(direction), 0.1}}, allowed, false, turns);
+    for (int k = 0; k < 4; ++k)
+      if (!a.sides[static_cast<std::size_t>(k)].empty()) return k;
+    return -1;
+  };
+  const Vec3 towardsMinusX(-0.342, 0, 0.94);  // a planar plant's limbs, each a slab of its own
+  CornerTurns turns = kNoCornerTurns;
+  CHECK(sideOf(towardsMinusX, &turns, all) == 1);
+  CHECK(turns[2] == 1);
+  CHECK(sideOf(towardsMinusX, &turns, all) == 2);
+  CHECK(sideOf(towardsMinusX, &turns, all) == 1);
+  // Without the parent's record, always the first of the two.
+  CHECK(sideOf(towardsMinusX, nullptr, all) == 1);
+  CHECK(sideOf(towardsMinusX, nullptr, all) == 1);
+  // A child a little off the corner takes its side and leaves the record as it was.
+  CornerTurns off = kNoCornerTurns;
+  CHECK(sideOf(Vec3(-0.342, -0.01, 0.94), &off, all) == 2);
+  CHECK(off == kNoCornerTurns);
+  // The other side not allowed (its corners in two ports already): the first, whatever the record says.
+  CornerTurns blocked{-1, -1, 1, -1};
+  CHECK(sideOf(towardsMinusX, &blocked, {true, true, false, true}) == 1);
 }
 
 TEST_CASE("every Arbaro species file's children connect at their attachment and no stem outgrows its skeleton", "[mesh][joints][real-data]") {

@@ -15,11 +15,32 @@ double sideScore(const Vec3& normal, const Vec3& axis, const Vec3& direction) {
   return glm::dot(normal, across);
 }
 
+// Two sides as good to within this (about 0.004 degrees either side of their corner): a planar plant's children
+// heading straight for a corner, all on one side's necks stacked one over the next (ABOP fig. 1.24b: limb 24's
+// neck swung 0.25 m out of the plant's plane across limb 12's, 8 mesh-made pairs; taken in turn, none).
+constexpr double kCornerTie = 1e-4;
+
+// The side a child heading for the corner between free side `best` and a neighbour as good takes: the one the
+// parent's last child at that corner did not.
+int turnAtCorner(const std::array<Vec3, 4>& sideNormals, const Vec3& axis, const Vec3& direction, const std::array<bool, 4>& sideAllowed,
+                 const PortAssignment& taken, int best, double bestScore, CornerTurns& turns) {
+  for (const int k : {(best + 1) % 4, (best + 3) % 4}) {
+    const auto side = static_cast<std::size_t>(k);
+    if (!sideAllowed[side] || !taken.sides[side].empty()) continue;
+    if (bestScore - sideScore(sideNormals[side], axis, direction) > kCornerTie) continue;
+    const auto corner = static_cast<std::size_t>(k == (best + 1) % 4 ? k : best);
+    const int chosen = turns[corner] == best ? k : best;
+    turns[corner] = chosen;
+    return chosen;
+  }
+  return best;
+}
+
 }  // namespace
 
 PortAssignment assignPorts(const std::array<Vec3, 4>& sideNormals, const Vec3& axis,
                            const std::vector<PortRequest>& requests, const std::array<bool, 4>& sideAllowed,
-                           bool topAvailable) {
+                           bool topAvailable, CornerTurns* turns) {
   PortAssignment result;
   std::vector<int> order(requests.size());
   std::iota(order.begin(), order.end(), 0);
@@ -48,7 +69,8 @@ PortAssignment assignPorts(const std::array<Vec3, 4>& sideNormals, const Vec3& a
       // Any free side beats a sub-box: the child's tube leaves straight out, then turns round its parent.
       if (result.sides[static_cast<std::size_t>(k)].empty() && s > scoreFree) { scoreFree = s; bestFree = k; }
     }
-    const int side = bestFree >= 0 ? bestFree : (bestAllowed >= 0 ? bestAllowed : bestAny);
+    int side = bestFree >= 0 ? bestFree : (bestAllowed >= 0 ? bestAllowed : bestAny);
+    if (turns && bestFree >= 0) side = turnAtCorner(sideNormals, axis, d, sideAllowed, result, bestFree, scoreFree, *turns);
     result.sides[static_cast<std::size_t>(side)].push_back(r);
   }
   return result;

@@ -137,6 +137,7 @@ class Builder {
     clones_.assign(sk_.stems.size(), {});
     children_.assign(sk_.stems.size(), {});
     faked_.assign(sk_.stems.size(), false);
+    cornerTurns_.assign(sk_.stems.size(), kNoCornerTurns);
     for (std::size_t i = 0; i < sk_.stems.size(); ++i) {
       const SkeletonStem& st = sk_.stems[i];
       if (!meshed(static_cast<int>(i))) continue;
@@ -187,6 +188,7 @@ class Builder {
   const std::vector<int>& fake_;            // sorted: stems faked whatever the rules say
   const std::vector<int>& nearCollars_;     // sorted: stems whose collar candidates stand nearer their port
   std::vector<bool> faked_;                // per stem: in out_.fakedStems
+  std::vector<CornerTurns> cornerTurns_;    // per stem: the sides its children heading for its corners took
   std::vector<Vec3> uvwSum_;
   std::vector<int> uvwCount_;
   std::vector<std::uint8_t> portUse_;      // per vertex: how many ports it is a corner of
@@ -1406,7 +1408,8 @@ class Builder {
     std::array<Vec3, 4> normals;
     for (int k = 0; k < 4; ++k) normals[static_cast<std::size_t>(k)] = glm::normalize(faceCenter(side(lo, hi, k)) - slabCenter);
     const auto requests = requestsFor(children);
-    const PortAssignment a = assignPorts(normals, axis, requests, allowedSides(lo, hi), top != nullptr);
+    CornerTurns* turns = parentStem >= 0 ? &cornerTurns_[static_cast<std::size_t>(parentStem)] : nullptr;
+    const PortAssignment a = assignPorts(normals, axis, requests, allowedSides(lo, hi), top != nullptr, turns);
 
     if (roof && top && a.top >= 0) {
       int used = -1, count = 0;
