@@ -109,6 +109,7 @@ struct PortStart {
   std::size_t parentFacesBegin = 0, parentFacesEnd = 0;  // the parent stem's quads, complete by then
   // A child attached before its parent's tube begins (moved to the first slab) also clears its grandparent.
   bool clearGrandparent = false;
+  bool moved = false;  // attached before the parent's tube begins (or past its end), joined to the nearest slab
   Vec3 grandPoint{0.0}, grandAxis{0.0};
   double grandReach = 0.0;
   // Texture v at the port, read from the parent's cross sections when the port is made: a sibling's neck adding
@@ -210,6 +211,7 @@ class Builder {
   int currentStem_ = -1;                   // stem whose faces are being emitted
   const PortStart* currentStart_ = nullptr;  // how that stem left its parent (null: a trunk)
   bool connectingMoved_ = false;           // the slab being connected holds children moved to the tube's start
+  bool slabMoved_ = false;                 // the same, whatever its stem's own start (its ports' `moved`)
   // Children attached along a stem's neck, before its tube begins: they leave through its first band, which
   // starts at ring `from` (neckPorts), instead of crowding its first slab far from where they attach.
   struct NeckChildren {
@@ -629,8 +631,24 @@ class Builder {
     const double dn = glm::dot(d, normal);
     const Vec3 at = dn > 0.1 ? start.branchPoint + d * (glm::dot(center - start.branchPoint, normal) / dn) : center;
     const double du = hu / w, dv = hv / h;
-    const double s = std::clamp(0.5 + glm::dot(at - center, eu) / (2.0 * w * w), du + 0.15, 0.85 - du);
-    const double t = std::clamp(0.5 + glm::dot(at - center, ev) / (2.0 * h * h), dv + 0.15, 0.85 - dv);
+    // The inset's centre (s, t) across the side (0..1 each way), kept 0.15 from its edges.
+    auto across = [&](const Vec3& x) {
+      return std::array<double, 2>{std::clamp(0.5 + glm::dot(x - center, eu) / (2.0 * w * w), du + 0.15, 0.85 - du),
+                                   std::clamp(0.5 + glm::dot(x - center, ev) / (2.0 * h * h), dv + 0.15, 0.85 - dv)};
+    };
+    std::array<double, 2> st0 = across(at);
+    // A child moved from before its parent's tube begins whose first edge meets the side past the joint floor (a
+    // shallow one meets it at its far end: the willow file's limb 287, 1.7 clone radii along): where the side is
+    // nearest its attachment.
+    if (start.moved && currentStem_ >= 0) {
+      const double s = st0[0], t = st0[1];
+      const Vec3 c = (1 - s) * (1 - t) * p[0] + s * (1 - t) * p[1] + s * t * p[2] + (1 - s) * t * p[3];
+      const SkeletonNode& node = sk_.nodes[static_cast<std::size_t>(sk_.stems[static_cast<std::size_t>(currentStem_)].attachNode)];
+      if (std::abs(glm::dot(c - node.world.position, node.world.direction())) > kFarChild * node.radius) {
+        st0 = across(start.branchPoint - normal * glm::dot(start.branchPoint - center, normal));
+      }
+    }
+    const double s = st0[0], t = st0[1];
     const std::array<std::array<double, 2>, 4> st{{{s - du, t - dv}, {s + du, t - dv}, {s + du, t + dv}, {s - du, t + dv}}};
     std::array<std::array<double, 4>, 4> weights{};
     std::array<Vec3, 4> corners{};
@@ -1193,6 +1211,7 @@ class Builder {
     }
     double previousS = sLo;
     const std::array<std::uint32_t, 4> collar = last.v;  // the band from the collar may arrive sideways
+    const bool trunkClone = st.level == 0 && st.cloneOf >= 0;
     for (const auto& [s, role] : stations) {
       // Extra cross sections where the spacing limits ask for them (never inside a slab).
       if (role < 0) {  // a slab's own band gets no extra cross sections
@@ -1258,6 +1277,15 @@ class Builder {
       double at = s;
       const Slab* slab = role == -1 ? slabStartingAt(slabs, s) : nullptr;
       if (slab && last.v == collar && unused(last) && slabFolds(poly, last, *slab) && ringAhead(poly, last, slab->hi, slab->need)) continue;
+      // A trunk clone's slab holding children moved from before its tube begins, past the joint floor from them,
+      // starts at the collar where that brings them within it (the willow file's limb 287 on clone 4: 1.72 -> 1.51
+      // clone radii, then within by its inset). Not on every stem: the slab's middle is only an estimate of where a
+      // thin child's inset goes, and the tupelo file's level-2 branches, whose twigs' insets were within already, got
+      // a tenth more skeleton-made pairs.
+      if (slab && slab->moved && trunkClone && last.v == collar && unused(last) && nearerFromCollar(poly, last, *slab) &&
+          ringAhead(poly, last, slab->hi, slab->need)) {
+        continue;
+      }
       if (slab && !ringAhead(poly, last, s, slabNeed(slabs, s))) {
         const double step = 0.1 * slab->need;
         for (double a = s + step; a < slab->hi - 0.3 * slab->need && at == s; a += step) {
@@ -1326,6 +1354,22 @@ class Builder {
       for (std::size_t j = i + 1; j < quads.size(); ++j)
         if (quadsMeet(quads[i], quads[j])) return true;
     return false;
+  }
+
+  // Whether a slab holding children moved from before the tube's start would hold them nearer their attachments
+  // (along the parent there) starting at the collar `last` than at its own first cross section, where that is past
+  // the joint floor.
+  bool nearerFromCollar(const StemPolyline& poly, const Ring& last, const Slab& slab) const {
+    const Vec3 hi = poly.position(slab.hi);
+    const Vec3 usual = 0.5 * (poly.position(slab.lo) + hi), fromCollar = 0.5 * (last.center + hi);
+    double worstUsual = 0.0, worstCollar = 0.0;
+    for (const int c : slab.children) {
+      const SkeletonNode& at = sk_.nodes[static_cast<std::size_t>(sk_.stems[static_cast<std::size_t>(c)].attachNode)];
+      const double ra = std::max(at.radius, 1e-12);
+      worstUsual = std::max(worstUsual, std::abs(glm::dot(usual - at.world.position, at.world.direction())) / ra);
+      worstCollar = std::max(worstCollar, std::abs(glm::dot(fromCollar - at.world.position, at.world.direction())) / ra);
+    }
+    return worstUsual > kFarChild && worstCollar <= kFarChild;
   }
 
   // A cross section none of whose corners is a port's yet.
@@ -1448,6 +1492,7 @@ class Builder {
       p.slabReach = slabReach;
       p.parentEnd = parentEnd;
       p.tex = portTex(q);
+      p.moved = slabMoved_;
       return withGrandparent(p);
     };
     if (top && a.top >= 0) deferred_->emplace_back(children[static_cast<std::size_t>(a.top)], portStart(top->v, true, 0.0));
@@ -1469,10 +1514,12 @@ class Builder {
   // did (the slab had a child to give it to).
   bool connectSlab(int stem, const Ring& lo, const Ring& hi, const Slab& slab, bool throughTop = false) {
     connectingMoved_ = slab.moved && currentStart_ && !currentStart_->top;
+    slabMoved_ = slab.moved;
     const std::vector<int> children = slab.moved ? joinedHere(lo, hi, slab.children) : slab.children;
     if (children.empty()) band(lo, hi);
     else connect(stem, slab.node, lo, hi, children, throughTop ? &hi : nullptr, false);
     connectingMoved_ = false;
+    slabMoved_ = false;
     return throughTop && !children.empty();
   }
 
