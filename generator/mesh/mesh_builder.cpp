@@ -1356,9 +1356,8 @@ class Builder {
     return false;
   }
 
-  // Whether a slab holding children moved from before the tube's start would hold them nearer their attachments
-  // (along the parent there) starting at the collar `last` than at its own first cross section, where that is past
-  // the joint floor.
+  // Whether a slab holding children moved from before the tube's start leaves one past the joint floor from its
+  // attachment (along the parent there, at the slab's middle) and, starting at the collar `last`, would leave none.
   bool nearerFromCollar(const StemPolyline& poly, const Ring& last, const Slab& slab) const {
     const Vec3 hi = poly.position(slab.hi);
     const Vec3 usual = 0.5 * (poly.position(slab.lo) + hi), fromCollar = 0.5 * (last.center + hi);
