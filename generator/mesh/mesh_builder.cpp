@@ -1278,10 +1278,10 @@ class Builder {
       const Slab* slab = role == -1 ? slabStartingAt(slabs, s) : nullptr;
       if (slab && last.v == collar && unused(last) && slabFolds(poly, last, *slab) && ringAhead(poly, last, slab->hi, slab->need)) continue;
       // A trunk clone's slab holding children moved from before its tube begins, past the joint floor from them,
-      // starts at the collar where that brings them within it (the willow file's limb 287 on clone 4: 1.72 -> 1.51
-      // clone radii, then within by its inset). Not on every stem: the slab's middle is only an estimate of where a
-      // thin child's inset goes, and the tupelo file's level-2 branches, whose twigs' insets were within already, got
-      // a tenth more skeleton-made pairs.
+      // starts at the collar where that brings them nearer (the willow file's limb 287 on clone 4: 1.72 -> 1.51 clone
+      // radii at seed 1, then within by its inset; 2.58 -> 1.62 at seed 3). Not on every stem: the slab's middle is
+      // only an estimate of where a thin child's inset goes, and the tupelo file's level-2 branches, whose twigs'
+      // insets were within already, got a tenth more skeleton-made pairs.
       if (slab && slab->moved && trunkClone && last.v == collar && unused(last) && nearerFromCollar(poly, last, *slab) &&
           ringAhead(poly, last, slab->hi, slab->need)) {
         continue;
@@ -1357,7 +1357,8 @@ class Builder {
   }
 
   // Whether a slab holding children moved from before the tube's start leaves one past the joint floor from its
-  // attachment (along the parent there, at the slab's middle) and, starting at the collar `last`, would leave none.
+  // attachment (along the parent there, at the slab's middle), and starting at the collar `last` would leave the
+  // farthest nearer.
   bool nearerFromCollar(const StemPolyline& poly, const Ring& last, const Slab& slab) const {
     const Vec3 hi = poly.position(slab.hi);
     const Vec3 usual = 0.5 * (poly.position(slab.lo) + hi), fromCollar = 0.5 * (last.center + hi);
@@ -1368,7 +1369,7 @@ class Builder {
       worstUsual = std::max(worstUsual, std::abs(glm::dot(usual - at.world.position, at.world.direction())) / ra);
       worstCollar = std::max(worstCollar, std::abs(glm::dot(fromCollar - at.world.position, at.world.direction())) / ra);
     }
-    return worstUsual > kFarChild && worstCollar <= kFarChild;
+    return worstUsual > kFarChild && worstCollar < worstUsual;
   }
 
   // A cross section none of whose corners is a port's yet.
