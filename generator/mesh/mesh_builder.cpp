@@ -631,6 +631,9 @@ class Builder {
     const double dn = glm::dot(d, normal);
     const Vec3 at = dn > 0.1 ? start.branchPoint + d * (glm::dot(center - start.branchPoint, normal) / dn) : center;
     const double du = hu / w, dv = hv / h;
+    // The bilinear weights of the side's corners at (a, b) across it, and the point there.
+    auto weightsAt = [](double a, double b) { return std::array<double, 4>{(1 - a) * (1 - b), a * (1 - b), a * b, (1 - a) * b}; };
+    auto pointAt = [&](const std::array<double, 4>& k) { return k[0] * p[0] + k[1] * p[1] + k[2] * p[2] + k[3] * p[3]; };
     // The inset's centre (s, t) across the side (0..1 each way), kept 0.15 from its edges.
     auto across = [&](const Vec3& x) {
       return std::array<double, 2>{std::clamp(0.5 + glm::dot(x - center, eu) / (2.0 * w * w), du + 0.15, 0.85 - du),
@@ -640,22 +643,17 @@ class Builder {
     // A child moved from before its parent's tube begins whose first edge meets the side past the joint floor (a
     // shallow one meets it at its far end: the willow file's limb 287, 1.7 clone radii along): where the side is
     // nearest its attachment.
-    if (start.moved && currentStem_ >= 0) {
-      const double s = st0[0], t = st0[1];
-      const Vec3 c = (1 - s) * (1 - t) * p[0] + s * (1 - t) * p[1] + s * t * p[2] + (1 - s) * t * p[3];
-      const SkeletonNode& node = sk_.nodes[static_cast<std::size_t>(sk_.stems[static_cast<std::size_t>(currentStem_)].attachNode)];
-      if (std::abs(glm::dot(c - node.world.position, node.world.direction())) > kFarChild * node.radius) {
-        st0 = across(start.branchPoint - normal * glm::dot(start.branchPoint - center, normal));
-      }
+    if (start.moved && currentStem_ >= 0 &&
+        alongFromAttachment(currentStem_, pointAt(weightsAt(st0[0], st0[1]))) > kFarChild * attachmentOf(currentStem_).radius) {
+      st0 = across(start.branchPoint - normal * glm::dot(start.branchPoint - center, normal));
     }
     const double s = st0[0], t = st0[1];
     const std::array<std::array<double, 2>, 4> st{{{s - du, t - dv}, {s + du, t - dv}, {s + du, t + dv}, {s - du, t + dv}}};
     std::array<std::array<double, 4>, 4> weights{};
     std::array<Vec3, 4> corners{};
     for (std::size_t k = 0; k < 4; ++k) {
-      const double a = st[k][0], b = st[k][1];
-      weights[k] = {(1 - a) * (1 - b), a * (1 - b), a * b, (1 - a) * b};
-      corners[k] = weights[k][0] * p[0] + weights[k][1] * p[1] + weights[k][2] * p[2] + weights[k][3] * p[3];
+      weights[k] = weightsAt(st[k][0], st[k][1]);
+      corners[k] = pointAt(weights[k]);
     }
     // Where another of the parent's faces passes through the side (a neck of the parent's own, leaving its parent
     // there), the inset's quads would cut it: the child leaves through the whole side instead.
@@ -1356,6 +1354,17 @@ class Builder {
     return false;
   }
 
+  // The node where `child` attaches to its parent.
+  const SkeletonNode& attachmentOf(int child) const {
+    return sk_.nodes[static_cast<std::size_t>(sk_.stems[static_cast<std::size_t>(child)].attachNode)];
+  }
+
+  // How far p lies from where `child` attaches, along its parent's skeleton there: as the joint floor is measured.
+  double alongFromAttachment(int child, const Vec3& p) const {
+    const SkeletonNode& at = attachmentOf(child);
+    return std::abs(glm::dot(p - at.world.position, at.world.direction()));
+  }
+
   // Whether a slab holding children moved from before the tube's start leaves one past the joint floor from its
   // attachment (along the parent there, at the slab's middle), and starting at the collar `last` would leave the
   // farthest nearer.
@@ -1364,10 +1373,9 @@ class Builder {
     const Vec3 usual = 0.5 * (poly.position(slab.lo) + hi), fromCollar = 0.5 * (last.center + hi);
     double worstUsual = 0.0, worstCollar = 0.0;
     for (const int c : slab.children) {
-      const SkeletonNode& at = sk_.nodes[static_cast<std::size_t>(sk_.stems[static_cast<std::size_t>(c)].attachNode)];
-      const double ra = std::max(at.radius, 1e-12);
-      worstUsual = std::max(worstUsual, std::abs(glm::dot(usual - at.world.position, at.world.direction())) / ra);
-      worstCollar = std::max(worstCollar, std::abs(glm::dot(fromCollar - at.world.position, at.world.direction())) / ra);
+      const double ra = std::max(attachmentOf(c).radius, 1e-12);
+      worstUsual = std::max(worstUsual, alongFromAttachment(c, usual) / ra);
+      worstCollar = std::max(worstCollar, alongFromAttachment(c, fromCollar) / ra);
     }
     return worstUsual > kFarChild && worstCollar < worstUsual;
   }
@@ -1533,10 +1541,9 @@ class Builder {
     std::vector<int> joined;
     for (const int c : children) {
       const SkeletonStem& st = sk_.stems[static_cast<std::size_t>(c)];
-      const SkeletonNode& at = sk_.nodes[static_cast<std::size_t>(st.attachNode)];
       // Measured along the parent's skeleton, as the joint floor is (a slab's own axis may lean off it).
-      const double along = std::abs(glm::dot(center - at.world.position, at.world.direction()));
-      const bool far = along > kFakeFrom * std::max(ra, at.radius) || along > 0.5 * st.length;
+      const double along = alongFromAttachment(c, center);
+      const bool far = along > kFakeFrom * std::max(ra, attachmentOf(c).radius) || along > 0.5 * st.length;
       if (far && (!branching_[static_cast<std::size_t>(c)] || (st.level >= 2 && bearsTwigsOnly(c)))) fakeTwig(c);
       else joined.push_back(c);
     }
