@@ -299,6 +299,55 @@ TEST_CASE("a stem crossing a branch's wood where the branch's child has its coll
   CHECK(report.meshMade == 1);
 }
 
+TEST_CASE("a branch's own parent crossing it where its child has its collar is as the skeleton makes it", "[mesh][self-intersection]") {
+  const double r = 0.05;
+  Skeleton skeleton = crossingSkeleton(r);
+  // Stem 0 (along x) is now a limb of stem 1 (along y), leaving it at its tip (0, 1, 0) for (-1, 0, 0) and turning
+  // back through it at the origin, as an L-system limb can; stem 2, a twig on stem 0 at x = 0.15, has its collar on
+  // stem 0's upper surface, across stem 1.
+  skeleton.stems[0].parentStem = 1;
+  skeleton.stems[0].attachNode = 3;
+  skeleton.stems[0].level = 1;
+  SkeletonNode base, tip;
+  base.stem = tip.stem = 2;
+  base.kind = NodeKind::Base;
+  tip.kind = NodeKind::Tip;
+  base.world.position = Vec3(0.15, 0, r);
+  tip.world.position = Vec3(0.15, 0, 1);
+  base.radius = tip.radius = tip.startRadius = 0.01;
+  base.parent = -1;
+  tip.parent = 4;
+  SkeletonStem twig;
+  twig.firstNode = 4;
+  twig.nodeCount = 2;
+  twig.level = 2;
+  twig.parentStem = 0;
+  twig.attachNode = 0;
+  skeleton.nodes.push_back(base);
+  skeleton.nodes.push_back(tip);
+  skeleton.stems.push_back(twig);
+  TreeMesh tree;
+  QuadSoup s;
+  s.quad(Vec3(-0.1, -r, r), Vec3(0.1, -r, r), Vec3(0.1, r, r), Vec3(-0.1, r, r));          // the twig's collar
+  s.quad(Vec3(0, -0.5, -r), Vec3(0, 0.5, -r), Vec3(0, 0.5, 2 * r), Vec3(0, -0.5, 2 * r));  // stem 1's surface there
+  tree.mesh = s.mesh;
+  tree.quadStem = {2, 1};
+  SelfIntersectionReport report = checkSelfIntersections(tree, skeleton);
+  REQUIRE(report.pairs == 1);
+  CHECK(report.hits[0].reachA > 10.0);  // far from the twig's own axis
+  CHECK(report.skeletonMade == 1);      // stem 0's wood, past its neck, crosses its parent there: so does the collar on it
+
+  // Stem 0 leaving stem 1 right there (from stem 1's axis at the origin): the crossing is its own joint, where its
+  // capsules against its parent have not begun, so the pair is the mesher's.
+  Skeleton atJoint = skeleton;
+  atJoint.nodes[2].world.position = Vec3(0, -1, 0);
+  atJoint.nodes[3].world.position = Vec3(0, 0, 0);
+  atJoint.nodes[0].world.position = Vec3(0, 0, 0);
+  report = checkSelfIntersections(tree, atJoint);
+  REQUIRE(report.pairs == 1);
+  CHECK(report.meshMade == 1);
+}
+
 TEST_CASE("against its parent, a child's capsules start where its wood has cleared the parent's", "[mesh][self-intersection]") {
   Skeleton s = crossingSkeleton(0.1);
   // Stem 1 grows from stem 0's base node, at right angles: cut at 1.6 (0.1 + 0.1) = 0.32 along it.

@@ -161,7 +161,9 @@ class PairClassifier {
         const int py = grownFrom(skeleton_, y);
         if (py < 0) continue;
         const bool kin = cloneKin(skeleton_, x, py);
-        if (kin || unrelatedTo(skeleton_, x, py)) meets = meets || woodMeetsAt(x, py, kin, h.point, builtRadius(tree_.mesh, fx));
+        // x may be py's own parent: py's surface, and the collar on it, cross x where py's wood past its neck does.
+        const bool grandparent = relationOf(skeleton_, x, py) == StemRelation::ParentChild && skeleton_.stems[static_cast<std::size_t>(py)].parentStem == x;
+        if (kin || grandparent || unrelatedTo(skeleton_, x, py)) meets = meets || woodMeetsAt(x, py, kin, h.point, builtRadius(tree_.mesh, fx));
       }
     }
     // Both quads stand for their parents' surfaces where the two parents' wood overlaps (two clones grown into each
