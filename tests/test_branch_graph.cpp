@@ -297,10 +297,10 @@ TEST_CASE("a tuft of a thousand stalks from one root stands on a wide hub, one c
   }
 }
 
-TEST_CASE("a single trunk stands on the ground unless it branches within a root radius of it", "[graph]") {
+TEST_CASE("a single trunk stands on the ground, a Root node under it when it branches within a root radius", "[graph]") {
   // A trunk of radius 0.1 (a given radius) branching at height h: a slab reaches at most one parent radius below
-  // its branch point, so above that the trunk needs no hub (whose box and neck moved ABOP 1.24c's lowest branches
-  // half a metre up the trunk, folding their first bands).
+  // its branch point, so below that the skeleton has a Root node; the mesher builds no hub for one trunk (a hub's
+  // box and neck moved ABOP 1.24c's lowest branches half a metre up the trunk, folding their first bands).
   for (const double h : {0.05, 0.09, 0.12, 0.3}) {
     INFO("branching at " << h);
     BranchGraph g;
@@ -312,8 +312,8 @@ TEST_CASE("a single trunk stands on the ground unless it branches within a root 
     const MeshTopologyReport r = checkTopology(tree.mesh);
     CHECK(r.boundaryEdges == 0);
     CHECK(r.eulerCharacteristic == 2);
-    if (h < 0.1) continue;
-    // The branch leaves from a slab about its attachment, not from far up the trunk.
+    CHECK(meshMadeIntersections(tree, s) == 0);
+    // The branch leaves from a slab about its attachment, not from far up the trunk (nor from a hub's top).
     for (const MeshRing& ring : tree.rings) {
       if (ring.stem == 1 && ring.arc < 0) CHECK(ring.center.z < h + 0.15);
     }

@@ -16,6 +16,7 @@
 #include "growth/lsystem/lsystem_model.hpp"
 #include "growth/lsystem/lsystem_svg.hpp"
 #include "growth/lsystem/turtle.hpp"
+#include "mesh/joint_checks.hpp"
 #include "mesh/mesh_checks.hpp"
 #include "mesh/self_intersection.hpp"
 #include "mesh/stem_capsules.hpp"
@@ -391,6 +392,23 @@ TEST_CASE("the ABOP plants' mesh-made pairs, folds and neck crossings stay at th
     CHECK(r.folds * 10 <= m.folds * 11);
     CHECK(r.neckCrossings * 10 <= m.necks * 11);
     CHECK(r.necksThroughParent * 10 <= m.throughParent * 11);
+  }
+}
+
+TEST_CASE("a plant whose one trunk grows from a root node stands on the ground, its lowest limbs where they attach", "[lsystem][mesh]") {
+  // ABOP 1.24a, 1.24b and 1.27 branch within a trunk radius of the ground, so their skeletons have a Root node under
+  // the one trunk. A hub there (three trunk radii tall) held fig-1-24b's limb 12 2.20 trunk radii up from where it
+  // attaches; standing on the ground, every child's first ring is within the joint floor of 1.5 parent radii.
+  for (const char* plant : {"fig-1-24a", "fig-1-24b", "fig-1-27"}) {
+    INFO(plant);
+    const Skeleton s = growPlant(plant);
+    REQUIRE(s.nodes.front().kind == NodeKind::Root);
+    const TreeMesh tree = buildTreeMesh(s);
+    double worst = 0.0;
+    for (const ChildPlacement& c : childPlacements(s, tree)) worst = std::max(worst, c.offset);
+    CHECK(worst <= 1.5);
+    CHECK(checkTopology(tree.mesh).boundaryEdges == 0);
+    CHECK(meshMadeIntersections(tree, s) == 0);
   }
 }
 

@@ -169,10 +169,12 @@ class Builder {
       if (st.attachNode >= 0) stemsAt_[static_cast<std::size_t>(st.attachNode)].push_back(static_cast<int>(i));
       else trunks.push_back(static_cast<int>(i));
     }
+    // A root node holding one trunk is that trunk's base, not a hub: a hub three radii tall held the children
+    // attached along it (ABOP fig. 1.24b's lowest limb) up to where the trunk's tube began.
     const bool rooted = !sk_.nodes.empty() && sk_.nodes[0].kind == NodeKind::Root;
-    if (rooted) buildRoot(stemsAt_[0]);
+    if (rooted && stemsAt_[0].size() > 1) buildRoot(stemsAt_[0]);
     else
-      for (int t : trunks) buildStem(t, nullptr);
+      for (int t : rooted ? stemsAt_[0] : trunks) buildStem(t, nullptr);
     finish();
   }
 
