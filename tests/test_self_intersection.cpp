@@ -76,6 +76,41 @@ Skeleton crossingSkeleton(double r) {
   return s;
 }
 
+// Stem 2, a twig of radius 0.01 on stem 0 rising at x = 0.15 (its wood starting at its own base, not back at stem
+// 0's node), added to a crossing skeleton of radius r.
+void addTwigOnStem0(Skeleton& skeleton, double r, std::int16_t level) {
+  SkeletonNode base, tip;
+  base.stem = tip.stem = 2;
+  base.kind = NodeKind::Base;
+  tip.kind = NodeKind::Tip;
+  base.world.position = Vec3(0.15, 0, r);
+  tip.world.position = Vec3(0.15, 0, 1);
+  base.radius = tip.radius = tip.startRadius = 0.01;
+  base.parent = -1;
+  tip.parent = 4;
+  SkeletonStem twig;
+  twig.firstNode = 4;
+  twig.nodeCount = 2;
+  twig.level = level;
+  twig.parentStem = 0;
+  twig.attachNode = 0;
+  skeleton.nodes.push_back(base);
+  skeleton.nodes.push_back(tip);
+  skeleton.stems.push_back(twig);
+}
+
+// A flat quad of `flatStem` on stem 0's upper surface (x within +-halfLength), and an upright face of stem 1
+// standing across it at x = 0, through stem 0's axis.
+TreeMesh flatAcrossStem1(double r, double halfLength, int flatStem) {
+  TreeMesh tree;
+  QuadSoup s;
+  s.quad(Vec3(-halfLength, -r, r), Vec3(halfLength, -r, r), Vec3(halfLength, r, r), Vec3(-halfLength, r, r));
+  s.quad(Vec3(0, -0.5, -r), Vec3(0, 0.5, -r), Vec3(0, 0.5, 2 * r), Vec3(0, -0.5, 2 * r));
+  tree.mesh = s.mesh;
+  tree.quadStem = {flatStem, 1};
+  return tree;
+}
+
 }  // namespace
 
 TEST_CASE("two quads crossing each other are one pair, two apart are none", "[mesh][self-intersection]") {
@@ -209,13 +244,8 @@ TEST_CASE("a closed cube has no intersecting quads", "[mesh][self-intersection]"
 TEST_CASE("two stems whose skeleton capsules cross make a skeleton-made pair, a fold stays mesh-made", "[mesh][self-intersection]") {
   const double r = 0.05;
   const Skeleton skeleton = crossingSkeleton(r);
-  TreeMesh tree;
-  QuadSoup s;
   // Stem 0 along x, a flat quad at its top surface; stem 1 along y, an upright quad through its axis.
-  s.quad(Vec3(-0.5, -r, r), Vec3(0.5, -r, r), Vec3(0.5, r, r), Vec3(-0.5, r, r));
-  s.quad(Vec3(0, -0.5, -r), Vec3(0, 0.5, -r), Vec3(0, 0.5, 2 * r), Vec3(0, -0.5, 2 * r));
-  tree.mesh = s.mesh;
-  tree.quadStem = {0, 1};
+  TreeMesh tree = flatAcrossStem1(r, 0.5, 0);
   SelfIntersectionReport report = checkSelfIntersections(tree, skeleton);
   REQUIRE(report.pairs == 1);
   CHECK(report.classified);
@@ -241,32 +271,9 @@ TEST_CASE("two stems whose skeleton capsules cross make a skeleton-made pair, a 
 TEST_CASE("a stem crossing a branch's wood where the branch's child has its collar is skeleton-made", "[mesh][self-intersection]") {
   const double r = 0.05;
   Skeleton skeleton = crossingSkeleton(r);
-  // Stem 2, a twig of radius 0.01 on stem 0, rising at x = 0.15: its collar lies on stem 0's upper surface.
-  SkeletonNode base, tip;
-  base.stem = tip.stem = 2;
-  base.kind = NodeKind::Base;
-  tip.kind = NodeKind::Tip;
-  base.world.position = Vec3(0.15, 0, r);
-  tip.world.position = Vec3(0.15, 0, 1);
-  base.radius = tip.radius = tip.startRadius = 0.01;
-  base.parent = -1;  // the twig's wood starts at its own base, not back at stem 0's node
-  tip.parent = 4;
-  SkeletonStem twig;
-  twig.firstNode = 4;
-  twig.nodeCount = 2;
-  twig.level = 1;
-  twig.parentStem = 0;
-  twig.attachNode = 0;
-  skeleton.nodes.push_back(base);
-  skeleton.nodes.push_back(tip);
-  skeleton.stems.push_back(twig);
+  addTwigOnStem0(skeleton, r, 1);  // its collar lies on stem 0's upper surface
   skeleton.nodes[0].world.rotation = glm::angleAxis(radians(90.0), Vec3(0, 1, 0));  // stem 0 leaves along +x
-  TreeMesh tree;
-  QuadSoup s;
-  s.quad(Vec3(-0.1, -r, r), Vec3(0.1, -r, r), Vec3(0.1, r, r), Vec3(-0.1, r, r));      // the twig's collar
-  s.quad(Vec3(0, -0.5, -r), Vec3(0, 0.5, -r), Vec3(0, 0.5, 2 * r), Vec3(0, -0.5, 2 * r));  // stem 1 through stem 0
-  tree.mesh = s.mesh;
-  tree.quadStem = {2, 1};
+  const TreeMesh tree = flatAcrossStem1(r, 0.1, 2);  // the twig's collar; stem 1 through stem 0 there
   SelfIntersectionReport report = checkSelfIntersections(tree, skeleton);
   REQUIRE(report.pairs == 1);
   CHECK(report.hits[0].reachA > 10.0);  // far from the twig's own axis: its wood does not explain it
@@ -308,30 +315,8 @@ TEST_CASE("a branch's own parent crossing it where its child has its collar is a
   skeleton.stems[0].parentStem = 1;
   skeleton.stems[0].attachNode = 3;
   skeleton.stems[0].level = 1;
-  SkeletonNode base, tip;
-  base.stem = tip.stem = 2;
-  base.kind = NodeKind::Base;
-  tip.kind = NodeKind::Tip;
-  base.world.position = Vec3(0.15, 0, r);
-  tip.world.position = Vec3(0.15, 0, 1);
-  base.radius = tip.radius = tip.startRadius = 0.01;
-  base.parent = -1;
-  tip.parent = 4;
-  SkeletonStem twig;
-  twig.firstNode = 4;
-  twig.nodeCount = 2;
-  twig.level = 2;
-  twig.parentStem = 0;
-  twig.attachNode = 0;
-  skeleton.nodes.push_back(base);
-  skeleton.nodes.push_back(tip);
-  skeleton.stems.push_back(twig);
-  TreeMesh tree;
-  QuadSoup s;
-  s.quad(Vec3(-0.1, -r, r), Vec3(0.1, -r, r), Vec3(0.1, r, r), Vec3(-0.1, r, r));          // the twig's collar
-  s.quad(Vec3(0, -0.5, -r), Vec3(0, 0.5, -r), Vec3(0, 0.5, 2 * r), Vec3(0, -0.5, 2 * r));  // stem 1's surface there
-  tree.mesh = s.mesh;
-  tree.quadStem = {2, 1};
+  addTwigOnStem0(skeleton, r, 2);
+  const TreeMesh tree = flatAcrossStem1(r, 0.1, 2);  // the twig's collar, and stem 1's surface there
   SelfIntersectionReport report = checkSelfIntersections(tree, skeleton);
   REQUIRE(report.pairs == 1);
   CHECK(report.hits[0].reachA > 10.0);  // far from the twig's own axis
