@@ -2,8 +2,7 @@
 """Lays renders out as a captioned grid for docs/ (needs Pillow: apt-get install -y python3-pil).
 
   gallery.py OUT.png COLUMNS CAPTION=IMAGE.png ...
-      puts the images in rows of COLUMNS, each under its caption (the caption's first line bold-free, small), and
-      writes a palette PNG (kept small for docs/).
+      puts the images in rows of COLUMNS, each under its caption, and writes a palette PNG (kept small for docs/).
 """
 import sys
 
