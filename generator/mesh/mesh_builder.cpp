@@ -83,6 +83,11 @@ constexpr int kFarTwigPasses = 3;
 // collar this much nearer its port: a shallow limb's collar, two child radii off its parent, reached into a limb
 // passing the parent (the CA black oak file's limb 350 at seed 2, 8 pairs; at half the distance, none).
 constexpr double kNearCollar = 0.5;
+// Stems whose necks an earlier mesh left crossing another stem (each sorted): their collars stand nearer their
+// ports, and those still crossing from there also lean along the stem (Builder::leavePort).
+struct CollarHints {
+  std::vector<int> nearer, leaning;
+};
 // A twig (level 2 on) passing within this many radii of a neighbouring stem's axis at that stem's joint, plus its
 // own radius, is a fake branch: a collar is placed at twice the child's radius. All trees' mesh-made pairs at seeds
 // 1-3 1,105 -> 973 and neck crossings 4,950 -> 2,735, quads 0.8 % fewer; at 2.5 radii 954 but quads 1.2 % fewer;
@@ -122,10 +127,10 @@ struct PortStart {
 
 class Builder {
  public:
-  // `fake`: stems to draw as fake branches whatever the rules say (the far twigs of an earlier pass); `nearCollars`:
-  // stems whose collar candidates stand kNearCollar as far from their port (necks an earlier mesh left crossing).
-  Builder(const Skeleton& s, const MeshOptions& o, TreeMesh& out, const std::vector<int>& fake, const std::vector<int>& nearCollars)
-      : sk_(s), opt_(o), out_(out), fake_(fake), nearCollars_(nearCollars) {}
+  // `fake`: stems to draw as fake branches whatever the rules say (the far twigs of an earlier pass); `collars`:
+  // stems whose collar candidates stand kNearCollar as far from their port, or also lean (CollarHints).
+  Builder(const Skeleton& s, const MeshOptions& o, TreeMesh& out, const std::vector<int>& fake, const CollarHints& collars)
+      : sk_(s), opt_(o), out_(out), fake_(fake), collars_(collars) {}
 
   void run() {
     const std::size_t vertices = out_.mesh.positions.capacity();
@@ -189,7 +194,7 @@ class Builder {
   std::vector<std::pair<Vec3, Vec3>> jointAxis_;  // per child: its axis from its attach node to where it clears its parent
   std::vector<double> clearance_;          // per child: parentClearance, the arc length where it clears its parent
   const std::vector<int>& fake_;            // sorted: stems faked whatever the rules say
-  const std::vector<int>& nearCollars_;     // sorted: stems whose collar candidates stand nearer their port
+  const CollarHints& collars_;              // stems whose collar candidates stand nearer their port, or also lean
   std::vector<bool> faked_;                // per stem: in out_.fakedStems
   std::vector<CornerTurns> cornerTurns_;    // per stem: the sides its children heading for its corners took
   std::vector<Vec3> uvwSum_;
@@ -517,7 +522,15 @@ class Builder {
     const Vec3 halfway = directionOr(normal + 2.0 * d, normal);
     const std::array<std::pair<Vec3, double>, 9> cloned{{{preferred, 1.0}, {halfway, 1.0}, {preferred, 1.6}, {halfway, 1.6},
                                                          {preferred, 2.5}, {halfway, 2.5}, {normal, 1.0}, {normal, 1.6}, {normal, 2.5}}};
-    const std::span<const std::pair<Vec3, double>> candidates = clone ? std::span<const std::pair<Vec3, double>>(cloned) : plain;
+    // A neck still crossing another stem from its nearer collar leans along its stem as a clone's does, before the
+    // usual candidates: ABOP fig. 1.24d's limb 26 leaves beside limb 25, which passes their parent 6 mm off 26's
+    // port, and the band out to any collar between the port's normal and the usual lean crossed it.
+    const std::array<std::pair<Vec3, double>, 9> leaned{{{halfway, 1.0}, {halfway, 1.6}, {halfway, 2.5}, {preferred, 1.0}, {preferred, 1.6},
+                                                         {preferred, 2.5}, {normal, 1.0}, {normal, 1.6}, {normal, 2.5}}};
+    const bool leaning = std::binary_search(collars_.leaning.begin(), collars_.leaning.end(), stem);
+    const std::span<const std::pair<Vec3, double>> candidates = clone     ? std::span<const std::pair<Vec3, double>>(cloned)
+                                                                : leaning ? std::span<const std::pair<Vec3, double>>(leaned)
+                                                                          : plain;
     const double clearStep = 0.25 * std::max(portRadius, rc);
     struct TubeStart {
       double unclear, clear;  // where the tube may begin, without and with its first band clear of the parent
@@ -533,9 +546,9 @@ class Builder {
     // every clone's so, two twig-bearing clones of the willow file folded at seed 3).
     const bool earlyClone = opt_.nearEarlyCloneCollars && clone && sk_.stems[static_cast<std::size_t>(stem)].level == 0 &&
                             attachedWithin(stem, poly, kEarlyChild * rc);
-    const double nearness = earlyClone                                                             ? kEarlyCloneCollar
-                            : std::binary_search(nearCollars_.begin(), nearCollars_.end(), stem) ? kNearCollar
-                                                                                                 : 1.0;
+    const double nearness = earlyClone                                                                 ? kEarlyCloneCollar
+                            : std::binary_search(collars_.nearer.begin(), collars_.nearer.end(), stem) ? kNearCollar
+                                                                                                       : 1.0;
     for (const auto& [dir, farness] : candidates) {
       const double scale = farness * nearness;
       const Vec3 c = center + dir * (e0 * scale);
@@ -543,8 +556,9 @@ class Builder {
       const RingFrame frame = transportFrame(port.frame, directionOr(dir + d, dir));
       const auto offsets = ringOffsets(frame, exitRadius * opt_.limitCompensation);
       const std::array<Vec3, 4> corners{c + offsets[0], c + offsets[1], c + offsets[2], c + offsets[3]};
+      // A leaning band can fold along the parent (a graph's branch leaving its trunk at 7 degrees): not that one.
       if (bandCrossesParent(start, portCorners, corners, &q) || bandMeetsInset(portCorners, q, corners) ||
-          bandMeetsSiblings(portCorners, q, corners)) {
+          bandMeetsSiblings(portCorners, q, corners) || (leaning && bandFolds(portCorners, q, corners))) {
         continue;
       }
       int score = std::abs(glm::dot(c - start.branchPoint, start.parentAxis)) <= along ? 3 : 1;
@@ -2119,7 +2133,7 @@ class Builder {
   }
 };
 
-TreeMesh buildOnce(const Skeleton& skeleton, const MeshOptions& options, const std::vector<int>& fake, const std::vector<int>& nearCollars,
+TreeMesh buildOnce(const Skeleton& skeleton, const MeshOptions& options, const std::vector<int>& fake, const CollarHints& collars,
                    std::vector<int>* farTwigs) {
   TreeMesh out;
   // About five quads (and as many vertices) per skeleton node; growing these vectors would cost page faults.
@@ -2131,7 +2145,7 @@ TreeMesh buildOnce(const Skeleton& skeleton, const MeshOptions& options, const s
   out.mesh.quads.reserve(vertices);
   out.quadStem.reserve(vertices);
   out.rings.reserve(vertices / 4);
-  Builder builder(skeleton, options, out, fake, nearCollars);
+  Builder builder(skeleton, options, out, fake, collars);
   builder.run();
   if (farTwigs) *farTwigs = builder.farTwigs();
   // Degenerate geometry must never leave here as NaN vertices (exports and the GPU would take them silently).
@@ -2143,15 +2157,15 @@ TreeMesh buildOnce(const Skeleton& skeleton, const MeshOptions& options, const s
   return out;
 }
 
-// The mesh with `nearCollars`' collars nearer their ports; `left` receives the crossings the crossing-twig pass could
-// not take out. A twig the first pass left past the joint floor is a fake branch, and the tree meshed again without
+// The mesh with the collars `collars` names nearer their ports (or leaning); `left` receives the crossings the
+// crossing-twig pass could not take out. A twig the first pass left past the joint floor is a fake branch, and the tree meshed again without
 // it: its neighbours' connections change, so the second pass may leave a few more (at most 1 to 3 twigs a tree,
 // measured). Those are taken out of that mesh rather than meshing it all again, their neighbours keeping their
 // places (a 100,000-internode graph was meshed four times); a further pass only where one cannot be.
-TreeMesh buildWithTwigsFaked(const Skeleton& skeleton, const MeshOptions& options, const std::vector<int>& nearCollars, CrossingsLeft* left) {
+TreeMesh buildWithTwigsFaked(const Skeleton& skeleton, const MeshOptions& options, const CollarHints& collars, CrossingsLeft* left) {
   std::vector<int> fake, far;
   for (int pass = 0;; ++pass) {
-    TreeMesh out = buildOnce(skeleton, options, fake, nearCollars, pass < kFarTwigPasses ? &far : nullptr);
+    TreeMesh out = buildOnce(skeleton, options, fake, collars, pass < kFarTwigPasses ? &far : nullptr);
     if (pass >= 1 && !far.empty() && takeOutTwigs(out, skeleton, far)) far.clear();
     if (pass == kFarTwigPasses || far.empty()) {
       // Last, the twigs whose quads still cross another stem's where the skeletons do not meet.
@@ -2175,8 +2189,19 @@ TreeMesh buildTreeMesh(const Skeleton& skeleton, const MeshOptions& options) {
   // Necks crossing other stems that no take-out could mend: once more with those collars nearer their ports, kept
   // only where that leaves fewer such crossings.
   CrossingsLeft nearer;
-  TreeMesh again = buildWithTwigsFaked(skeleton, options, left.necks, &nearer);
-  return nearer.pairs < left.pairs ? again : out;
+  const CollarHints near{left.necks, {}};
+  TreeMesh again = buildWithTwigsFaked(skeleton, options, near, &nearer);
+  if (nearer.pairs < left.pairs) {
+    out = std::move(again);
+    left.pairs = nearer.pairs;
+  }
+  if (nearer.necks.empty()) return out;
+  // Those still crossing from there: once more leaning along their stems too, kept on the same terms.
+  CollarHints leaning{{}, nearer.necks};
+  std::set_union(left.necks.begin(), left.necks.end(), nearer.necks.begin(), nearer.necks.end(), std::back_inserter(leaning.nearer));
+  CrossingsLeft leaned;
+  TreeMesh third = buildWithTwigsFaked(skeleton, options, leaning, &leaned);
+  return leaned.pairs < left.pairs ? third : out;
 }
 
 }  // namespace arbor
