@@ -395,6 +395,34 @@ TEST_CASE("the ABOP plants have no mesh-made pair, and their folds and neck cros
   }
 }
 
+TEST_CASE("children attached along a parent's neck leave it within the joint floor", "[lsystem][mesh]") {
+  // A stem whose wood runs along its own parent has a long neck; its children attached there leave through slabs cut
+  // out of that neck from six of its radii on (eight before), their collars near as the floor measures it. ABOP
+  // fig. 1.24d's limbs 13, 33 and 113 sat 1.50, 1.79 and 4.15 parent radii along, fig-1-27's limb 82 at seed 3 1.80.
+  // Left past the floor: fig-1-24d's limb 73 (2.22), on a neck whose line runs off its parent's skeleton, and
+  // fig-1-31a's 92 and 105, attached where their parent still runs inside the trunk's wood.
+  struct Plant {
+    const char* name;
+    std::uint64_t seed;
+    std::vector<int> past;  // children left past 1.5 parent radii
+  };
+  for (const Plant& p : {Plant{"fig-1-24d", 1, {73}}, Plant{"fig-1-27", 3, {}}, Plant{"fig-1-24c", 1, {}}, Plant{"fig-1-25", 1, {}}}) {
+    INFO(p.name << " at seed " << p.seed);
+    const std::string file = std::string(ARBOR_ASSET_DIR) + "/lsystems/" + p.name + ".lsys";
+    GrowthOptions growth;
+    growth.seed = p.seed;
+    const Skeleton s = readLsystemModel(readFile(file), file).grow(growth);
+    const TreeMesh tree = buildTreeMesh(s);
+    std::vector<int> past;
+    for (const ChildPlacement& c : childPlacements(s, tree)) {
+      if (c.offset > 1.5) past.push_back(c.stem);
+    }
+    CHECK(past == p.past);
+    CHECK(checkTopology(tree.mesh).boundaryEdges == 0);
+    CHECK(meshMadeIntersections(tree, s) == 0);
+  }
+}
+
 TEST_CASE("a plant whose one trunk grows from a root node stands on the ground, its lowest limbs where they attach", "[lsystem][mesh]") {
   // ABOP 1.24a, 1.24b and 1.27 branch within a trunk radius of the ground, so their skeletons have a Root node under
   // the one trunk. A hub there (three trunk radii tall) held fig-1-24b's limb 12 2.20 trunk radii up from where it

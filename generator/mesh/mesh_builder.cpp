@@ -36,8 +36,10 @@ namespace {
 constexpr std::uint32_t kUnmade = 0xfffffff0u;  // indices of corners not emitted yet
 // A child's neck at least this many of its radii long (from its first ring to where its tube begins) gives ports
 // to its own children attached along it; on shorter ones they join the first slab (all trees at seeds 1-3, with
-// bowed necks: 8 radii 1,830 mesh-made pairs, 12 radii 1,889, 16 radii 1,884, 6 radii 1,903, 4 radii 2,577).
-constexpr double kNeckPortsFrom = 8.0;
+// bowed necks: 8 radii 1,830 mesh-made pairs, 12 radii 1,889, 16 radii 1,884, 6 radii 1,903, 4 radii 2,577). Since
+// every later joint rule (2026-12-06): 6 radii and 8 both leave none, and at 6 ABOP fig. 1.24d's limbs on 7.9-radii
+// necks leave where they attach instead of 2-4 parent radii along at their parent's first slab.
+constexpr double kNeckPortsFrom = 6.0;
 // A limb fused along its parent up to its split whose collar lies within this many of its radii of the split
 // builds the split's box on the collar itself; farther, on the skeleton moved clear of the parent (continueStem).
 constexpr double kFusedSplitNear = 4.0;
@@ -115,6 +117,7 @@ struct PortStart {
   // A child attached before its parent's tube begins (moved to the first slab) also clears its grandparent.
   bool clearGrandparent = false;
   bool moved = false;  // attached before the parent's tube begins (or past its end), joined to the nearest slab
+  bool onNeck = false; // leaving through a slab cut out of its parent's neck (neckPorts)
   Vec3 grandPoint{0.0}, grandAxis{0.0};
   double grandReach = 0.0;
   // Texture v at the port, read from the parent's cross sections when the port is made: a sibling's neck adding
@@ -219,6 +222,7 @@ class Builder {
   const PortStart* currentStart_ = nullptr;  // how that stem left its parent (null: a trunk)
   bool connectingMoved_ = false;           // the slab being connected holds children moved to the tube's start
   bool slabMoved_ = false;                 // the same, whatever its stem's own start (its ports' `moved`)
+  bool neckSlab_ = false;                  // the slab being connected is cut out of a neck (its ports' `onNeck`)
   // Children attached along a stem's neck, before its tube begins: they leave through its first band, which
   // starts at ring `from` (neckPorts), instead of crowding its first slab far from where they attach.
   struct NeckChildren {
@@ -561,7 +565,11 @@ class Builder {
           bandMeetsSiblings(portCorners, q, corners) || (leaning && bandFolds(portCorners, q, corners))) {
         continue;
       }
-      int score = std::abs(glm::dot(c - start.branchPoint, start.parentAxis)) <= along ? 3 : 1;
+      // A child moved to a slab or leaving a neck's is near only as the joint floor measures it too: the slab's axis
+      // and reach are not its parent's skeleton there (ABOP fig. 1.24d's limbs 13, 33 and 113 sat 1.50-4.15 radii along).
+      const bool near = std::abs(glm::dot(c - start.branchPoint, start.parentAxis)) <= along &&
+                        (!(start.moved || start.onNeck) || nearAsChecked(stem, c, start));
+      int score = near ? 3 : 1;
       // Better still, a collar from which the tube clears the parent before the stem ends or splits: from the others
       // one band ran on to the stem's end, back through the parent (the larch file's hooked twigs). Not from the
       // farthest collars: that jutted a willow limb's neck a metre sideways.
@@ -592,6 +600,17 @@ class Builder {
     const Ring exit = emitRing(stem, exitCenter, exitFrame, exitRadius, port.tex + barkTextureAdvance(e, exitRadius));
     portBand(port, exit);
     return exit;
+  }
+
+  // Whether a first cross section at c stands within the joint floor as childPlacements measures it: along the
+  // parent's skeleton direction at the attach node, in the larger of its radius there and the port slab's.
+  bool nearAsChecked(int stem, const Vec3& c, const PortStart& start) const {
+    const int node = sk_.stems[static_cast<std::size_t>(stem)].attachNode;
+    if (node < 0) return true;
+    const SkeletonNode& n = sk_.nodes[static_cast<std::size_t>(node)];
+    const Vec3 dir = n.world.rotation * Vec3(0, 0, 1);
+    const double ra = std::max(n.radius, start.parentReach / opt_.limitCompensation);
+    return std::abs(glm::dot(c - n.world.position, dir)) <= 1.45 * ra;
   }
 
   // The child's first cross section on its skeleton straight out of the inset `port` (corners c), where the band
@@ -1517,6 +1536,7 @@ class Builder {
       p.parentEnd = parentEnd;
       p.tex = portTex(q);
       p.moved = slabMoved_;
+      p.onNeck = neckSlab_;
       return withGrandparent(p);
     };
     if (top && a.top >= 0) deferred_->emplace_back(children[static_cast<std::size_t>(a.top)], portStart(top->v, true, 0.0));
@@ -1852,8 +1872,9 @@ class Builder {
       const Ring hi = between(neck.stem, a, b, g.hi / len, bow(g.hi / len));
       band(prev, lo);
       connectingMoved_ = currentStart_ && !currentStart_->top;
+      neckSlab_ = true;
       connect(neck.stem, g.node, lo, hi, joined, nullptr, false);
-      connectingMoved_ = false;
+      connectingMoved_ = neckSlab_ = false;
       prev = hi;
     }
     band(prev, b);
