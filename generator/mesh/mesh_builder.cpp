@@ -605,12 +605,7 @@ class Builder {
   // Whether a first cross section at c stands within the joint floor as childPlacements measures it: along the
   // parent's skeleton direction at the attach node, in the larger of its radius there and the port slab's.
   bool nearAsChecked(int stem, const Vec3& c, const PortStart& start) const {
-    const int node = sk_.stems[static_cast<std::size_t>(stem)].attachNode;
-    if (node < 0) return true;
-    const SkeletonNode& n = sk_.nodes[static_cast<std::size_t>(node)];
-    const Vec3 dir = n.world.rotation * Vec3(0, 0, 1);
-    const double ra = std::max(n.radius, start.parentReach / opt_.limitCompensation);
-    return std::abs(glm::dot(c - n.world.position, dir)) <= 1.45 * ra;
+    return alongFromAttachment(stem, c) <= 1.45 * std::max(attachmentOf(stem).radius, start.parentReach / opt_.limitCompensation);
   }
 
   // The child's first cross section on its skeleton straight out of the inset `port` (corners c), where the band
@@ -681,6 +676,19 @@ class Builder {
     if (start.moved && currentStem_ >= 0 &&
         alongFromAttachment(currentStem_, pointAt(weightsAt(st0[0], st0[1]))) > kFarChild * attachmentOf(currentStem_).radius) {
       st0 = across(start.branchPoint - normal * glm::dot(start.branchPoint - center, normal));
+      // Still past it (a side slanting away along the parent: the willow file's limb 287 at seed 3 on a trunk
+      // clone's collar band, 1.62 clone radii along): the place in the side nearest along the parent.
+      double best = alongFromAttachment(currentStem_, pointAt(weightsAt(st0[0], st0[1])));
+      for (int i = 0; i <= 8 && best > kFarChild * attachmentOf(currentStem_).radius; ++i) {
+        for (int j = 0; j <= 8; ++j) {
+          const std::array<double, 2> c{du + 0.15 + (0.7 - 2.0 * du) * i / 8.0, dv + 0.15 + (0.7 - 2.0 * dv) * j / 8.0};
+          const double a = alongFromAttachment(currentStem_, pointAt(weightsAt(c[0], c[1])));
+          if (a < best - 1e-9 * sk_.treeScale) {
+            best = a;
+            st0 = c;
+          }
+        }
+      }
     }
     const double s = st0[0], t = st0[1];
     const std::array<std::array<double, 2>, 4> st{{{s - du, t - dv}, {s + du, t - dv}, {s + du, t + dv}, {s - du, t + dv}}};
