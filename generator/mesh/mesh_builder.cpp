@@ -529,8 +529,8 @@ class Builder {
     // A neck still crossing another stem from its nearer collar leans along its stem as a clone's does, before the
     // usual candidates: ABOP fig. 1.24d's limb 26 leaves beside limb 25, which passes their parent 6 mm off 26's
     // port, and the band out to any collar between the port's normal and the usual lean crossed it.
-    const std::array<std::pair<Vec3, double>, 9> leaned{{{halfway, 1.0}, {halfway, 1.6}, {halfway, 2.5}, {preferred, 1.0}, {preferred, 1.6},
-                                                         {preferred, 2.5}, {normal, 1.0}, {normal, 1.6}, {normal, 2.5}}};
+    const std::array<std::pair<Vec3, double>, 9> leaned{
+        {{halfway, 1.0}, {halfway, 1.6}, {halfway, 2.5}, plain[0], plain[1], plain[2], plain[3], plain[4], plain[5]}};
     const bool leaning = std::binary_search(collars_.leaning.begin(), collars_.leaning.end(), stem);
     const std::span<const std::pair<Vec3, double>> candidates = clone     ? std::span<const std::pair<Vec3, double>>(cloned)
                                                                 : leaning ? std::span<const std::pair<Vec3, double>>(leaned)
@@ -673,16 +673,19 @@ class Builder {
     // A child moved from before its parent's tube begins whose first edge meets the side past the joint floor (a
     // shallow one meets it at its far end: the willow file's limb 287, 1.7 clone radii along): where the side is
     // nearest its attachment.
-    if (start.moved && currentStem_ >= 0 &&
-        alongFromAttachment(currentStem_, pointAt(weightsAt(st0[0], st0[1]))) > kFarChild * attachmentOf(currentStem_).radius) {
+    auto alongAt = [&](const std::array<double, 2>& c) { return alongFromAttachment(currentStem_, pointAt(weightsAt(c[0], c[1]))); };
+    const bool moved = start.moved && currentStem_ >= 0;
+    const double limit = moved ? kFarChild * attachmentOf(currentStem_).radius : 0.0;
+    if (moved && alongAt(st0) > limit) {
       st0 = across(start.branchPoint - normal * glm::dot(start.branchPoint - center, normal));
       // Still past it (a side slanting away along the parent: the willow file's limb 287 at seed 3 on a trunk
-      // clone's collar band, 1.62 clone radii along): the place in the side nearest along the parent.
-      double best = alongFromAttachment(currentStem_, pointAt(weightsAt(st0[0], st0[1])));
-      for (int i = 0; i <= 8 && best > kFarChild * attachmentOf(currentStem_).radius; ++i) {
+      // clone's collar band, 1.62 clone radii along): the place in the side nearest along the parent, on a grid over
+      // the centres `across` allows.
+      double best = alongAt(st0);
+      for (int i = 0; i <= 8 && best > limit; ++i) {
         for (int j = 0; j <= 8; ++j) {
           const std::array<double, 2> c{du + 0.15 + (0.7 - 2.0 * du) * i / 8.0, dv + 0.15 + (0.7 - 2.0 * dv) * j / 8.0};
-          const double a = alongFromAttachment(currentStem_, pointAt(weightsAt(c[0], c[1])));
+          const double a = alongAt(c);
           if (a < best - 1e-9 * sk_.treeScale) {
             best = a;
             st0 = c;
@@ -2220,9 +2223,10 @@ TreeMesh buildTreeMesh(const Skeleton& skeleton, const MeshOptions& options) {
   CrossingsLeft nearer;
   const CollarHints near{left.necks, {}};
   TreeMesh again = buildWithTwigsFaked(skeleton, options, near, &nearer);
-  if (nearer.pairs < left.pairs) {
+  std::size_t fewest = left.pairs;  // mesh-made pairs left in `out`
+  if (nearer.pairs < fewest) {
     out = std::move(again);
-    left.pairs = nearer.pairs;
+    fewest = nearer.pairs;
   }
   if (nearer.necks.empty()) return out;
   // Those still crossing from there: once more leaning along their stems too, kept on the same terms.
@@ -2230,7 +2234,7 @@ TreeMesh buildTreeMesh(const Skeleton& skeleton, const MeshOptions& options) {
   std::set_union(left.necks.begin(), left.necks.end(), nearer.necks.begin(), nearer.necks.end(), std::back_inserter(leaning.nearer));
   CrossingsLeft leaned;
   TreeMesh third = buildWithTwigsFaked(skeleton, options, leaning, &leaned);
-  return leaned.pairs < left.pairs ? third : out;
+  return leaned.pairs < fewest ? third : out;
 }
 
 }  // namespace arbor
