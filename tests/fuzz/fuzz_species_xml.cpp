@@ -1,4 +1,5 @@
-// Arbaro XML: parsed, and when valid grown and meshed under the default limits.
+// Arbaro XML: parsed, and when valid grown and meshed under the fuzz limits (fuzz_limits.hpp).
+#include "fuzz_limits.hpp"
 #include "fuzz_target.hpp"
 #include "growth/weber_penn/weber_penn.hpp"
 #include "mesh/tree_mesh.hpp"
@@ -8,7 +9,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   return arbor::fuzz::guarded(data, size, [](const std::string& text) {
     arbor::ImportNotes notes;
     const arbor::SpeciesParams p = arbor::readSpeciesXml(text, "fuzz.xml", &notes);
-    const arbor::Skeleton s = arbor::generateSkeleton(p, arbor::GrowthOptions{});
-    arbor::buildTreeMesh(s);
+    const arbor::Skeleton s = arbor::generateSkeleton(p, arbor::fuzz::fuzzGrowth());
+    arbor::buildTreeMesh(s, arbor::fuzz::fuzzMesh());
   });
 }
