@@ -87,6 +87,24 @@ class FileSink : public std::streambuf {
   FileSink(const FileSink&) = delete;
   FileSink& operator=(const FileSink&) = delete;
 
+  // The whole of the open file `source` appended by the kernel; false (nothing written) where it cannot.
+  bool copyFrom(int source) {
+#ifdef __linux__
+    drain(false);
+    for (bool first = true;; first = false) {
+      const ssize_t n = ::copy_file_range(source, nullptr, fd_, nullptr, std::size_t{1} << 30, 0);
+      if (n < 0 && errno == EINTR) continue;
+      if (n < 0 && first && (errno == EXDEV || errno == ENOSYS || errno == EOPNOTSUPP || errno == EINVAL)) return false;
+      if (n < 0) fail("writing failed");
+      if (n == 0) return true;
+      written_ += static_cast<std::size_t>(n);
+    }
+#else
+    (void)source;
+    return false;
+#endif
+  }
+
   // The rest of the buffer out, blocks reserved past the end given back, and the file closed.
   void finish() {
     drain(false);
@@ -190,6 +208,21 @@ void writeFileAtomically(const std::string& path, const std::function<void(std::
     std::remove(temporary.c_str());
     throw std::runtime_error(path + ": cannot be written (" + reason + ")");
   }
+}
+
+void copyFileAtomically(const std::string& from, const std::string& to) {
+  const int source = ::open(from.c_str(), O_RDONLY | O_CLOEXEC);
+  if (source < 0) throw std::runtime_error(from + ": cannot be opened for reading");
+  struct Closer {
+    int fd;
+    ~Closer() { ::close(fd); }
+  } closeSource{source};
+  writeFileAtomically(to, [&](std::ostream& out) {
+    auto* sink = dynamic_cast<FileSink*>(out.rdbuf());
+    if (sink && sink->copyFrom(source)) return;
+    // Another kind of stream, or a file system the kernel cannot copy within: through the process.
+    out << readFile(from);
+  });
 }
 
 namespace detail {

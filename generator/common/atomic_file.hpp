@@ -14,6 +14,10 @@ void writeFileAtomically(const std::string& path, const std::function<void(std::
 
 std::string readFile(const std::string& path);  // throws std::runtime_error naming the path
 
+// `from` copied to `to` as writeFileAtomically writes, the bytes moved by the kernel (copy_file_range) where it
+// can: an OBJ's textures never pass through the process. Throws std::runtime_error naming the path.
+void copyFileAtomically(const std::string& from, const std::string& to);
+
 namespace detail {
 // Registers `path` as a file being written, for the test that interrupts a process (never released).
 void registerPartialForTest(const std::string& path);

@@ -31,12 +31,21 @@ void writeMeshFile(const std::string& path, const QuadMesh& mesh, const std::str
   else writeFileAtomically(path, writeGlb(mesh, name));
 }
 
+namespace {
+
+// The texture files every export carries, in AssetTextures' order; `arbor textures` makes the normal map from the
+// height map.
+constexpr const char* kTextureFiles[3] = {"bark_color.png", "bark_normal.png", "leaf_atlas.png"};
+
+std::string texturePath(const char* file) { return assetDirectory() + "/textures/" + file; }
+
+}  // namespace
+
 AssetTextures exportTextures() {
-  const std::string dir = assetDirectory() + "/textures/";
   AssetTextures textures;
-  textures.barkColor = readFile(dir + "bark_color.png");
-  textures.barkNormal = readFile(dir + "bark_normal.png");  // `arbor textures` makes it from the height map
-  textures.leafAtlas = readFile(dir + "leaf_atlas.png");
+  textures.barkColor = readFile(texturePath(kTextureFiles[0]));
+  textures.barkNormal = readFile(texturePath(kTextureFiles[1]));
+  textures.leafAtlas = readFile(texturePath(kTextureFiles[2]));
   return textures;
 }
 
@@ -50,8 +59,10 @@ void writeTreeFile(const std::string& path, const Skeleton& skeleton, const std:
     assetOptions.leaves = false;  // the OBJ writer makes the cards as it prints them
     assetOptions.branchCards = false;
   }
-  // The texture files are read, and an OBJ's leaf lines printed, while the tree is meshed.
-  std::future<AssetTextures> textures = std::async(std::launch::async, [&] { return options.textures ? exportTextures() : AssetTextures{}; });
+  // A glTF's texture files are read, and an OBJ's leaf lines printed, while the tree is meshed (an OBJ's textures
+  // are copied beside it by the kernel).
+  std::future<AssetTextures> textures =
+      std::async(std::launch::async, [&] { return options.textures && !obj ? exportTextures() : AssetTextures{}; });
   const std::vector<Leaf> noLeaves;
   std::atomic<bool> meshed{false};
   std::future<std::shared_ptr<const ObjLeafLines>> leafLines;
@@ -78,12 +89,13 @@ void writeTreeFile(const std::string& path, const Skeleton& skeleton, const std:
   std::string mtl;
   if (options.textures) {
     // The maps first, the OBJ naming them last: a reader never finds an OBJ whose textures are still missing.
-    const std::string color = stem + "_bark_color.png", normal = stem + "_bark_normal.png", atlas = stem + "_leaf_atlas.png";
-    writeFileAtomically((folder / color).string(), asset.textures.barkColor);
-    writeFileAtomically((folder / normal).string(), asset.textures.barkNormal);
-    writeFileAtomically((folder / atlas).string(), asset.textures.leafAtlas);
+    std::string names[3];
+    for (std::size_t i = 0; i < 3; ++i) {
+      names[i] = stem + "_" + kTextureFiles[i];
+      copyFileAtomically(texturePath(kTextureFiles[i]), (folder / names[i]).string());
+    }
     mtl = stem + ".mtl";
-    writeFileAtomically((folder / mtl).string(), writeMtl(color, normal, atlas));
+    writeFileAtomically((folder / mtl).string(), writeMtl(names[0], names[1], names[2]));
   }
   const AssetLod& lod = asset.lods.front();
   const std::shared_ptr<const ObjLeafLines> leaves = leafLines.get();
