@@ -48,6 +48,29 @@ std::vector<std::string> allPresets() {
 
 }  // namespace
 
+TEST_CASE("arbor starts without Vulkan, GLFW or X11 and hands the engine's commands to arbor-engine beside it", "[cli]") {
+  // What the dynamic loader maps for the commands without a GPU or window (a third of a small export's start-up).
+  const Result needed = arbor::test::runCommand("readelf -d " + std::string(ARBOR_BINARY) + " 2>&1");
+  REQUIRE(needed.exitCode == 0);
+  CHECK_THAT(needed.output, Catch::Contains("(NEEDED)") && !Catch::Contains("libvulkan") && !Catch::Contains("libglfw") && !Catch::Contains("libX11"));
+  // Help lists every command, the engine's too, and an engine command runs through arbor.
+  const Result help = run("--help");
+  CHECK(help.exitCode == 0);
+  CHECK_THAT(help.output, Catch::Contains("generate") && Catch::Contains("render") && Catch::Contains("view") && Catch::Contains("bench"));
+  CHECK(run("textures --help").exitCode == 0);
+  // Alone, without arbor-engine beside it: its own commands run, the engine's fail naming what is missing.
+  const fs::path alone = fs::path(arbor::test::tempPath("arbor-alone"));
+  fs::remove_all(alone);
+  fs::create_directories(alone);
+  fs::copy_file(ARBOR_BINARY, alone / "arbor");
+  const std::string program = (alone / "arbor").string();
+  CHECK(arbor::test::runCommand(program + " generate palm --quiet --out " + (alone / "palm.obj").string() + " 2>&1").exitCode == 0);
+  const Result render = arbor::test::runCommand(program + " render palm --out " + (alone / "palm.png").string() + " 2>&1");
+  CHECK(render.exitCode == 1);
+  CHECK_THAT(render.output, Catch::Contains((alone / "arbor-engine").string()) && Catch::Contains("cannot be run"));
+  CHECK_FALSE(fs::exists(alone / "palm.png"));
+}
+
 TEST_CASE("generate writes a skeleton and a summary", "[cli]") {
   const std::string out = arbor::test::tempPath("aspen.json");
   const Result r = run("generate quaking-aspen --seed 3 --out " + out);

@@ -4,6 +4,7 @@
 # 200-tree forest with leaves, leaves with self-shadowing, and wind. Each step has its own time limit, so one
 # that hangs costs only its own minutes. Progress goes to stdout; everything lands in $OUT (a handful of files).
 #   ARBOR=build/tools/arbor OUT=out/device bash tools/device_bench.sh [quick]
+# (carry arbor-engine beside ARBOR: arbor hands it the render, view and bench commands)
 # 'quick' runs each step small (a check on lavapipe that the script works before a GPU is spent on it).
 set -u
 arbor=${ARBOR:-build/tools/arbor}

@@ -1,77 +1,24 @@
-// arbor: one program, one subcommand per job (generate, species, bench; render and view come later).
+// arbor-engine: every command of Arbor, those that render, view and benchmark on the GPU among them (`arbor`
+// hands those here).
 #include <cstdio>
-#include <malloc.h>
-#include <iostream>
 
-#include "commands.hpp"
-#include "common/input_error.hpp"
+#include "cli_main.hpp"
 #include "vk/context.hpp"
-
-namespace arbor::cli {
-
-int runGuarded(const Action& action) {
-  try {
-    return action();
-  } catch (const InputError& e) {
-    std::fprintf(stderr, "arbor: error: %s\n", e.what());
-    return kExitBadInput;
-  } catch (const LimitError& e) {
-    std::fprintf(stderr, "arbor: error: %s\n", e.what());
-    return kExitBadInput;
-  } catch (const vk::VulkanError& e) {
-    std::fprintf(stderr, "arbor: Vulkan error: %s\n", e.what());
-    return kExitFailure;
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "arbor: error: %s\n", e.what());
-    return kExitFailure;
-  }
-}
-
-}  // namespace arbor::cli
 
 int main(int argc, char** argv) {
   using namespace arbor::cli;
-  // Trees are rebuilt in place (viewer edits, benchmarks): keep freed blocks for reuse instead of handing
-  // tens of megabytes back to the kernel and faulting them in again on the next tree.
-  mallopt(M_MMAP_THRESHOLD, 1 << 30);
-  mallopt(M_TRIM_THRESHOLD, 1 << 30);
-  CLI::App app{"Arbor: Weber-Penn trees as one connected quad mesh, refined by GPU tessellation.", "arbor"};
-  app.set_version_flag("--version", std::string("arbor ") + ARBOR_VERSION);
-  app.require_subcommand(1);
-  Action action;
-  addGenerateCommand(app, action);
-  addMeshCommand(app, action);
-  addLsystemCommand(app, action);
-  addGrowCommand(app, action);
-  addSpeciesCommand(app, action);
-  addBenchCommand(app, action);
-  addRenderCommand(app, action);
-  addViewCommand(app, action);
-  addTexturesCommand(app, action);
-  addAccuracyCommand(app, action);
-  addCheckCommand(app, action);
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::CallForAllHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::CallForVersion& e) {
-    return app.exit(e);
-  } catch (const CLI::ParseError& e) {
-    // CLI11 says "A subcommand is required" for a mistyped one too: name it and the commands there are.
-    std::string names;
-    bool known = false;
-    for (const CLI::App* sub : app.get_subcommands({})) {
-      names += (names.empty() ? "" : ", ") + sub->get_name();
-      known = known || (argc > 1 && sub->get_name() == argv[1]);
-    }
-    if (argc > 1 && argv[1][0] != '-' && !known) {
-      std::fprintf(stderr, "arbor: usage error: unknown command '%s'; commands: %s\nRun 'arbor --help'.\n", argv[1], names.c_str());
-      return kExitBadInput;
-    }
-    std::fprintf(stderr, "arbor: usage error: %s\nRun 'arbor --help' or 'arbor <command> --help'.\n", e.what());
-    return kExitBadInput;
-  }
-  return action ? runGuarded(action) : kExitBadInput;
+  // The order of `arbor --help`.
+  static constexpr AddCommand kCommands[] = {addGenerateCommand, addMeshCommand,     addLsystemCommand, addGrowCommand,
+                                             addSpeciesCommand,  addBenchCommand,    addRenderCommand,  addViewCommand,
+                                             addTexturesCommand, addAccuracyCommand, addCheckCommand};
+  return runCli(argc, argv, kCommands, [](const Action& action) {
+    return runGuarded([&] {
+      try {
+        return action();
+      } catch (const arbor::vk::VulkanError& e) {
+        std::fprintf(stderr, "arbor: Vulkan error: %s\n", e.what());
+        return kExitFailure;
+      }
+    });
+  });
 }

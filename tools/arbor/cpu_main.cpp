@@ -1,0 +1,23 @@
+// arbor: the commands that need no GPU or window run here; any other argument list (render, view, bench,
+// textures, accuracy, --help, a mistyped command) is handed to arbor-engine beside this program, unchanged.
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <unistd.h>
+
+#include "cli_main.hpp"
+
+int main(int argc, char** argv) {
+  using namespace arbor::cli;
+  static constexpr AddCommand kCommands[] = {addGenerateCommand, addMeshCommand, addLsystemCommand,
+                                             addGrowCommand,     addSpeciesCommand, addCheckCommand};
+  if (namesOneOf(argc, argv, kCommands)) return runCli(argc, argv, kCommands, runGuarded);
+  std::error_code ec;
+  const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
+  const std::string engine = ((ec ? std::filesystem::path(argv[0]) : self).parent_path() / "arbor-engine").string();
+  ::execv(engine.c_str(), argv);
+  std::fprintf(stderr, "arbor: error: %s: cannot be run (%s); it holds the commands that use Vulkan and windows, installed beside arbor\n",
+               engine.c_str(), std::strerror(errno));
+  return kExitFailure;
+}
