@@ -43,9 +43,9 @@ void main() {
   vec3 onPatch = surface.position, p = surface.position, n = surface.normal;
   uvw = surface.uvw;
   radius = surface.radius;
-  if (scene.displace.x != 0.0) p += surface.along * displacement(uvw, radius, displacementLod(p, radius));
+  if (runtime(scene.displace.x) != 0.0) p += surface.along * displacement(uvw, radius, displacementLod(p, radius));
 
-  if (scene.flags.x != 0u) {
+  if (runtime(scene.flags.x) != 0u) {
     uint slot = atomicAdd(capture.count, 1u);
     if (slot < capture.capacity) {
       capture.entries[3u * slot] = vec4(float(patchIndex), u, v, uvw.x);

@@ -20,7 +20,7 @@ float seamFade(float w) {
 float displacementLod(vec3 objectPosition, float radius) {
   float width = float(textureSize(barkHeight, 0).x);
   float texelsPerSegment;
-  if (scene.tess.y > 0.0) {
+  if (runtime(scene.tess.y) > 0.0) {
     float distance = length((draw.model * vec4(objectPosition, 1.0)).xyz - scene.cameraPos.xyz);
     float segment = scene.tess.y * distance / scene.lens.x;
     texelsPerSegment = segment * width / (2.0 * PI * max(radius, 1e-6));
@@ -55,7 +55,7 @@ float heightAt(vec2 tc, float lod) {
 
 // Displacement along the normal (5.5.1): (d - b) r s, faded at seams.
 float displacement(vec3 uvw, float radius, float lod) {
-  if (scene.displace.x == 0.0) return 0.0;
+  if (runtime(scene.displace.x) == 0.0) return 0.0;
   float d = heightAt(barkCoordinates(uvw), lod);
   return (d - scene.displace.y) * radius * scene.displace.x * seamFade(uvw.z);
 }

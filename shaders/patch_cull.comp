@@ -13,7 +13,7 @@ vec4 toClip(vec3 objectPosition) { return scene.viewProj * (pass.model * vec4(ob
 // Tessellation factor of an edge from its two end points only, so the patches on both sides agree (no
 // cracks), rounded up as equal spacing rounds it.
 uint edgeFactor(vec3 a, vec3 b) {
-  if (scene.tess.y <= 0.0) return uint(ceil(scene.tess.x));
+  if (runtime(scene.tess.y) <= 0.0) return uint(ceil(scene.tess.x));
   vec4 ca = toClip(a), cb = toClip(b);
   if (ca.w <= 1e-3 || cb.w <= 1e-3) return uint(ceil(scene.tess.z));  // crosses the eye plane: as fine as allowed
   float pixels = length((ca.xy / ca.w - cb.xy / cb.w) * 0.5 * scene.viewport.xy);
@@ -48,16 +48,17 @@ bool facingAway(vec3 lo, vec3 hi, vec4 cone) {
 }
 
 void main() {
+  uint flags = runtime(pass.flags);
   uint primitive = gl_GlobalInvocationID.x;
   if (primitive >= pass.primitiveCount) return;
   vec4 low = hulls[3u * primitive], high = hulls[3u * primitive + 1u], cone = hulls[3u * primitive + 2u];
   float reach = low.w * abs(scene.displace.x);  // the largest displacement, (d - b) r s with |d - b| <= 1
   vec3 lo = low.xyz - reach, hi = high.xyz + reach;
-  if ((pass.flags & kCullFrustum) != 0u && outsideFrustum(lo, hi)) return;
-  if ((pass.flags & kCullBackFaces) != 0u && facingAway(lo, hi, cone)) return;
+  if ((flags & kCullFrustum) != 0u && outsideFrustum(lo, hi)) return;
+  if ((flags & kCullBackFaces) != 0u && facingAway(lo, hi, cone)) return;
 
   uvec4 factor;
-  if ((pass.flags & kTriangles) != 0u) {
+  if ((flags & kTriangles) != 0u) {
     vec3 p0 = vertices[triangleIndices[3u * primitive]].positionRadius.xyz;
     vec3 p1 = vertices[triangleIndices[3u * primitive + 1u]].positionRadius.xyz;
     vec3 p2 = vertices[triangleIndices[3u * primitive + 2u]].positionRadius.xyz;
@@ -71,8 +72,8 @@ void main() {
     factor = uvec4(edgeFactor(c0, c3), edgeFactor(c0, c1), edgeFactor(c1, c2), edgeFactor(c3, c2));
   }
   uint largest = max(max(factor.x, factor.y), max(factor.z, factor.w));
-  uint bucket = largest <= 1u && (pass.flags & kCornerBucket) != 0u ? 0u
-                : (pass.flags & kBuckets) == 0u                    ? 1u
+  uint bucket = largest <= 1u && (flags & kCornerBucket) != 0u ? 0u
+                : (flags & kBuckets) == 0u                    ? 1u
                                                                    : uint(findMSB(max(largest, 2u) - 1u)) + 1u;
   uint slot = atomicAdd(counts[pass.counterBase + bucket], 1u);
   visible[pass.listBase + bucket * pass.primitiveCount + slot] =
