@@ -65,6 +65,9 @@ TEST_CASE("arbor starts without Vulkan, GLFW or X11 and hands the engine's comma
   fs::copy_file(ARBOR_BINARY, alone / "arbor");
   const std::string program = (alone / "arbor").string();
   CHECK(arbor::test::runCommand(program + " generate palm --quiet --out " + (alone / "palm.obj").string() + " 2>&1").exitCode == 0);
+  const Result version = arbor::test::runCommand(program + " --version 2>&1");
+  CHECK(version.exitCode == 0);
+  CHECK_THAT(version.output, Catch::StartsWith("arbor "));
   const Result render = arbor::test::runCommand(program + " render palm --out " + (alone / "palm.png").string() + " 2>&1");
   CHECK(render.exitCode == 1);
   CHECK_THAT(render.output, Catch::Contains((alone / "arbor-engine").string()) && Catch::Contains("cannot be run"));

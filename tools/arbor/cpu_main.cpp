@@ -12,7 +12,9 @@ int main(int argc, char** argv) {
   using namespace arbor::cli;
   static constexpr AddCommand kCommands[] = {addGenerateCommand, addMeshCommand, addLsystemCommand,
                                              addGrowCommand,     addSpeciesCommand, addCheckCommand};
-  if (namesOneOf(argc, argv, kCommands)) return runCli(argc, argv, kCommands, runGuarded);
+  // Its own commands, and --version (the same for both programs), run here.
+  const bool version = argc == 2 && std::strcmp(argv[1], "--version") == 0;
+  if (version || namesOneOf(argc, argv, kCommands)) return runCli(argc, argv, kCommands, runGuarded);
   std::error_code ec;
   const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
   const std::string engine = ((ec ? std::filesystem::path(argv[0]) : self).parent_path() / "arbor-engine").string();
