@@ -15,8 +15,7 @@ float seamFade(float w) {
 // a point, or the displaced surface would crack. Uniform factors: a patch side spans a quarter turn of the
 // branch (a quarter of the texture's width) cut into the same number of segments everywhere. Adaptive
 // factors: a segment is about the target's pixels long, which each point knows from its distance and radius
-// (the texture's width wraps once around the branch). (A computed level also keeps lavapipe fast: a
-// constant level 0 in these stages costs it seconds per frame.)
+// (the texture's width wraps once around the branch).
 float displacementLod(vec3 objectPosition, float radius) {
   float width = float(textureSize(barkHeight, 0).x);
   float texelsPerSegment;
