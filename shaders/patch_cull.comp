@@ -73,8 +73,8 @@ void main() {
   }
   uint largest = max(max(factor.x, factor.y), max(factor.z, factor.w));
   uint bucket = largest <= 1u && (flags & kCornerBucket) != 0u ? 0u
-                : (flags & kBuckets) == 0u                    ? 1u
-                                                                   : uint(findMSB(max(largest, 2u) - 1u)) + 1u;
+                : (flags & kBuckets) == 0u                     ? 1u
+                                                               : uint(findMSB(max(largest, 2u) - 1u)) + 1u;
   uint slot = atomicAdd(counts[pass.counterBase + bucket], 1u);
   visible[pass.listBase + bucket * pass.primitiveCount + slot] =
       uvec2(primitive, factor.x | (factor.y << 8) | (factor.z << 16) | (factor.w << 24));
