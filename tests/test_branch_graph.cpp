@@ -707,6 +707,10 @@ TEST_CASE("graphs that are no tree are refused, naming the node and what is allo
   CHECK_THAT(read(head + R"({"id":5,"parent":4,"position":[0,NaN,1]}]})"), Catch::StartsWith("tree.json: ") && Catch::Contains("NaN"));
   CHECK_THAT(read(head + R"({"id":5,"parent":4,"position":[0,1e999,1]}]})"), Catch::StartsWith("tree.json: "));
   CHECK_THAT(read(head + R"({"id":5,"parent":4,"position":[0,0]}]})"), Catch::Contains("nodes[id 5].position") && Catch::Contains("[x, y, z]"));
+  // A node 10,000 km out: float positions resolve a metre there, and a fuzzed graph's twigs collapsed into NaN.
+  CHECK_THAT(read(head + R"({"id":5,"parent":4,"position":[0,-9941113.5,1]}]})"),
+             Catch::Contains("nodes[id 5].position[1]") && Catch::Contains("within 100000 m"));
+  CHECK(read(head + R"({"id":5,"parent":4,"position":[0,-100000,1]}]})").empty());
   CHECK_THAT(read(head + R"({"id":5.5,"parent":4,"position":[0,0,1]}]})"), Catch::Contains("nodes[1].id") && Catch::Contains("whole number"));
   CHECK_THAT(read(head + R"({"id":5,"parent":4,"position":[0,0,1],"radius":"big"}]})"), Catch::Contains("nodes[id 5].radius"));
   CHECK_THAT(read(head + R"({"id":5,"parent":4,"position":[0,0,1],"radus":1}]})"), Catch::Contains("nodes[1].radus") && Catch::Contains("radius"));
@@ -793,6 +797,7 @@ TEST_CASE("bad skeleton files are refused naming the file and field", "[graph][j
   CHECK_THAT(read(replaced("\"parent\": 0", "\"parent\": 7")), Catch::Contains("nodes[1].parent") && Catch::Contains("earlier node"));
   CHECK_THAT(read(replaced("\"radius\": ", "\"radius\": -")), Catch::Contains("nodes[0].radius") && Catch::Contains(">= 0"));
   CHECK_THAT(read(replaced("arbor-skeleton/1", "arbor-skeleton/9")), Catch::Contains("'format'"));
+  CHECK_THAT(read(replaced("\"position\": [", "\"position\": [200000")), Catch::Contains("nodes[0].position[0]") && Catch::Contains("within 100000 m"));
   CHECK_THAT(read(replaced("\"firstNode\": 0", "\"firstNode\": 1")), Catch::StartsWith("s.json: "));
   CHECK_THAT(read(good.substr(0, good.size() / 2)), Catch::StartsWith("s.json: ") && Catch::Contains("invalid JSON"));
 }

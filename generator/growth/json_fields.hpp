@@ -13,6 +13,7 @@
 #include "common/input_error.hpp"
 #include "common/input_file.hpp"
 #include "common/text_util.hpp"
+#include "growth/tree_limits.hpp"
 #include "math.hpp"
 
 namespace arbor::json_fields {
@@ -117,6 +118,18 @@ inline Vec3 vec3(const json& v, const std::string& file, const std::string& fiel
     out[k] = number(v[static_cast<std::size_t>(k)], file, field + "[" + std::to_string(k) + "]", -1e300, 1e300, "a finite number");
   }
   return out;
+}
+
+// A node's position: three finite numbers, each within kMaxCoordinate of the origin.
+inline Vec3 position(const json& v, const std::string& file, const std::string& field) {
+  const Vec3 p = vec3(v, file, field);
+  for (int k = 0; k < 3; ++k) {
+    if (std::abs(p[k]) > kMaxCoordinate) {
+      throw InputError(file, field + "[" + std::to_string(k) + "]", formatNumber(p[k]) + " m lies too far from the origin; allowed: within " +
+                                                                         formatNumber(kMaxCoordinate) + " m on each axis (the mesh's float positions resolve 8 mm there)");
+    }
+  }
+  return p;
 }
 
 }  // namespace arbor::json_fields

@@ -224,7 +224,7 @@ Skeleton readSkeletonJson(const std::string& text, const std::string& file) {
     node.offset = num(n, "offset", at, -kBig, kBig, "a finite number");
     node.radius = num(n, "radius", at, 0.0, kBig, "a radius >= 0");
     node.startRadius = num(n, "startRadius", at, 0.0, kBig, "a radius >= 0");
-    const Vec3 position = vec3(member(n, "position", file, at, "[x, y, z]"), file, at + "position");
+    const Vec3 position = json_fields::position(member(n, "position", file, at, "[x, y, z]"), file, at + "position");
     const Vec3 direction = vec3(member(n, "direction", file, at, "a unit vector [x, y, z]"), file, at + "direction");
     if (std::abs(glm::length(direction) - 1.0) > 1e-6) throw InputError(file, at + "direction", "not a unit vector; give one of length 1");
     node.world = Transform{position, rotationTo(direction)};

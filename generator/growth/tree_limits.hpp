@@ -15,6 +15,10 @@ struct TreeLimits {
   std::size_t quads = 2'500'000;   // mesh quads (also after subdivision for export)
 };
 
+// How far from the origin a node of a skeleton or branch graph file may lie, on each axis (metres): a mesh's float
+// positions still resolve 8 mm there; at 10,000 km they resolve a metre, and a twig's cross sections collapse.
+inline constexpr double kMaxCoordinate = 100000.0;
+
 struct TreeEstimate {
   std::vector<double> stemsPerLevel;
   std::vector<double> nodesPerLevel;

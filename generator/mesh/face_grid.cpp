@@ -18,7 +18,11 @@ std::uint64_t FaceGrid::key(long x, long y, long z) const {
   return (u(x) << 42) | (u(y) << 21) | u(z);
 }
 
-long FaceGrid::cell(double v) const { return static_cast<long>(std::floor(v / cellSize_)); }
+// Clamped, and NaN to 0, so that a degenerate box (a band of collapsed corners being tested) is never undefined.
+long FaceGrid::cell(double v) const {
+  const double c = std::floor(v / cellSize_);
+  return c >= 0x1p19 ? 1L << 19 : c <= -0x1p19 ? -(1L << 19) : c == c ? static_cast<long>(c) : 0;
+}
 
 void FaceGrid::build(std::vector<Box> boxes) {
   boxes_ = std::move(boxes);

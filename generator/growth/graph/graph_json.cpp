@@ -45,7 +45,7 @@ BranchGraph readBranchGraphJson(const std::string& text, const std::string& file
     const std::string allowedParent = "the id of another node, or -1 for the root";
     parentId.push_back(integer(member(n, "parent", file, idField(node.id, ""), allowedParent), file, idField(node.id, "parent"), -1, kMaxId,
                                allowedParent));
-    node.position = vec3(member(n, "position", file, idField(node.id, ""), "[x, y, z]"), file, idField(node.id, "position"));
+    node.position = position(member(n, "position", file, idField(node.id, ""), "[x, y, z]"), file, idField(node.id, "position"));
     if (n.contains("radius") && !n.at("radius").is_null()) {
       node.radius = number(n.at("radius"), file, idField(node.id, "radius"), -1e300, 1e300, "a finite number (<= 0: none given)");
     }
