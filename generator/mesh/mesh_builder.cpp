@@ -85,6 +85,8 @@ constexpr int kFarTwigPasses = 3;
 // collar this much nearer its port: a shallow limb's collar, two child radii off its parent, reached into a limb
 // passing the parent (the CA black oak file's limb 350 at seed 2, 8 pairs; at half the distance, none).
 constexpr double kNearCollar = 0.5;
+// How many half-radius steps a first cross section moves on before the steps widen (continueStem).
+constexpr int kFineSteps = 256;
 // The third whole mesh (collars leaning, below) only up to this many quads: a fuzzed palm of 65,520 trunk clones
 // (917,000 quads) took 3.6 -> 5.0 s with it, past the fuzz run's time limit; every preset and Arbaro file stays under
 // 200,000 quads, and only ABOP fig. 1.24d (3,600) takes that pass.
@@ -1240,7 +1242,11 @@ class Builder {
       double at = sLo;
       const double next = stations.front().first;
       auto fits = [&](double s) { return ringAhead(poly, last, s) && !firstBandsCross(poly, last, s, next); };
-      while (!fits(at) && at + gap(at) < next - 4.0 * gap(sLo)) at += 0.5 * gap(at);
+      // Past kFineSteps half gaps the steps widen to a kFineSteps-th of the span: a fuzzed graph's 36 km internode of
+      // 1 cm twigs took millions of steps (18 s).
+      for (int k = 0; !fits(at) && at + gap(at) < next - 4.0 * gap(sLo); ++k) {
+        at += k < kFineSteps ? 0.5 * gap(at) : std::max(0.5 * gap(at), (next - sLo) / kFineSteps);
+      }
       if (fits(at)) {
         last = advance(stem, poly, last, at);
         sLo = at;
