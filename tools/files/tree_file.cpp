@@ -37,15 +37,16 @@ namespace {
 // height map.
 constexpr const char* kTextureFiles[3] = {"bark_color.png", "bark_normal.png", "leaf_atlas.png"};
 
-std::string texturePath(const char* file) { return assetDirectory() + "/textures/" + file; }
+std::string textureFolder() { return assetDirectory() + "/textures/"; }
 
 }  // namespace
 
 AssetTextures exportTextures() {
+  const std::string folder = textureFolder();
   AssetTextures textures;
-  textures.barkColor = readFile(texturePath(kTextureFiles[0]));
-  textures.barkNormal = readFile(texturePath(kTextureFiles[1]));
-  textures.leafAtlas = readFile(texturePath(kTextureFiles[2]));
+  textures.barkColor = readFile(folder + kTextureFiles[0]);
+  textures.barkNormal = readFile(folder + kTextureFiles[1]);
+  textures.leafAtlas = readFile(folder + kTextureFiles[2]);
   return textures;
 }
 
@@ -61,8 +62,8 @@ void writeTreeFile(const std::string& path, const Skeleton& skeleton, const std:
   }
   // A glTF's texture files are read, and an OBJ's leaf lines printed, while the tree is meshed (an OBJ's textures
   // are copied beside it by the kernel).
-  std::future<AssetTextures> textures =
-      std::async(std::launch::async, [&] { return options.textures && !obj ? exportTextures() : AssetTextures{}; });
+  std::future<AssetTextures> textures;
+  if (options.textures && !obj) textures = std::async(std::launch::async, exportTextures);
   const std::vector<Leaf> noLeaves;
   std::atomic<bool> meshed{false};
   std::future<std::shared_ptr<const ObjLeafLines>> leafLines;
@@ -76,7 +77,7 @@ void writeTreeFile(const std::string& path, const Skeleton& skeleton, const std:
   } meshedOnExit{meshed};
   TreeAsset asset = makeTreeAsset(skeleton, name, assetOptions, std::move(finest), progress);
   meshed = true;
-  asset.textures = textures.get();
+  if (textures.valid()) asset.textures = textures.get();
   if (progress) progress("writing " + path);
   if (!obj) {
     writeFileAtomically(path, endsWith(path, ".gltf") ? writeGltf(asset) : writeGlb(asset));
@@ -89,10 +90,11 @@ void writeTreeFile(const std::string& path, const Skeleton& skeleton, const std:
   std::string mtl;
   if (options.textures) {
     // The maps first, the OBJ naming them last: a reader never finds an OBJ whose textures are still missing.
+    const std::string source = textureFolder();
     std::string names[3];
     for (std::size_t i = 0; i < 3; ++i) {
       names[i] = stem + "_" + kTextureFiles[i];
-      copyFileAtomically(texturePath(kTextureFiles[i]), (folder / names[i]).string());
+      copyFileAtomically(source + kTextureFiles[i], (folder / names[i]).string());
     }
     mtl = stem + ".mtl";
     writeFileAtomically((folder / mtl).string(), writeMtl(names[0], names[1], names[2]));
