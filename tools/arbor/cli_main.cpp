@@ -1,6 +1,7 @@
 #include "cli_main.hpp"
 
 #include <cstdio>
+#include <cstring>
 #include <malloc.h>
 
 #include "common/input_error.hpp"
@@ -33,19 +34,8 @@ int runGuarded(const Action& action) {
   }
 }
 
-bool namesOneOf(int argc, char** argv, std::span<const AddCommand> commands) {
-  if (argc < 2) return false;
-  CLI::App app{kDescription, "arbor"};
-  configure(app);
-  Action unused;
-  for (AddCommand add : commands) add(app, unused);
-  for (const CLI::App* sub : app.get_subcommands({})) {
-    if (sub->get_name() == argv[1]) return true;
-  }
-  return false;
-}
-
-int runCli(int argc, char** argv, std::span<const AddCommand> commands, const std::function<int(const Action&)>& guard) {
+int runCli(int argc, char** argv, std::span<const AddCommand> commands, const std::function<int(const Action&)>& guard,
+           const std::function<int()>& otherwise) {
   // Trees are rebuilt in place (viewer edits, benchmarks): keep freed blocks for reuse instead of handing
   // tens of megabytes back to the kernel and faulting them in again on the next tree.
   mallopt(M_MMAP_THRESHOLD, 1 << 30);
@@ -54,6 +44,11 @@ int runCli(int argc, char** argv, std::span<const AddCommand> commands, const st
   configure(app);
   Action action;
   for (AddCommand add : commands) add(app, action);
+  if (otherwise && !(argc == 2 && std::strcmp(argv[1], "--version") == 0)) {
+    bool named = false;
+    for (const CLI::App* sub : app.get_subcommands({})) named = named || (argc > 1 && sub->get_name() == argv[1]);
+    if (!named) return otherwise();
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

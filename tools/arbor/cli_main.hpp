@@ -11,11 +11,10 @@ namespace arbor::cli {
 
 using AddCommand = void (*)(CLI::App&, Action&);
 
-// Whether argv[1] names one of `commands` (checked before parsing, by registering them on a scratch CLI).
-bool namesOneOf(int argc, char** argv, std::span<const AddCommand> commands);
-
 // Registers `commands`, parses the arguments and runs the chosen command through `guard` (runGuarded, or a
-// program's own wrapper around it); the process's exit code.
-int runCli(int argc, char** argv, std::span<const AddCommand> commands, const std::function<int(const Action&)>& guard);
+// program's own wrapper around it); the process's exit code. `otherwise`, when given, runs instead where argv[1]
+// names none of `commands` and is not --version (arbor hands those to arbor-engine).
+int runCli(int argc, char** argv, std::span<const AddCommand> commands, const std::function<int(const Action&)>& guard,
+           const std::function<int()>& otherwise = {});
 
 }  // namespace arbor::cli

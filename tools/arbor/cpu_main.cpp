@@ -12,14 +12,14 @@ int main(int argc, char** argv) {
   using namespace arbor::cli;
   static constexpr AddCommand kCommands[] = {addGenerateCommand, addMeshCommand, addLsystemCommand,
                                              addGrowCommand,     addSpeciesCommand, addCheckCommand};
-  // Its own commands, and --version (the same for both programs), run here.
-  const bool version = argc == 2 && std::strcmp(argv[1], "--version") == 0;
-  if (version || namesOneOf(argc, argv, kCommands)) return runCli(argc, argv, kCommands, runGuarded);
-  std::error_code ec;
-  const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
-  const std::string engine = ((ec ? std::filesystem::path(argv[0]) : self).parent_path() / "arbor-engine").string();
-  ::execv(engine.c_str(), argv);
-  std::fprintf(stderr, "arbor: error: %s: cannot be run (%s); it holds the commands that use Vulkan and windows, installed beside arbor\n",
-               engine.c_str(), std::strerror(errno));
-  return kExitFailure;
+  // Its own commands and --version run here; anything else is arbor-engine's, given the same arguments.
+  return runCli(argc, argv, kCommands, runGuarded, [argv] {
+    std::error_code ec;
+    const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
+    const std::string engine = ((ec ? std::filesystem::path(argv[0]) : self).parent_path() / "arbor-engine").string();
+    ::execv(engine.c_str(), argv);
+    std::fprintf(stderr, "arbor: error: %s: cannot be run (%s); it holds the commands that use Vulkan and windows, installed beside arbor\n",
+                 engine.c_str(), std::strerror(errno));
+    return kExitFailure;
+  });
 }
