@@ -39,8 +39,4 @@ layout(push_constant) uniform Draw {
   uint impostorWindBase;  // first vec4 of the fake-branch ends' records
 } draw;
 
-// lavapipe (Mesa 22.3) inlines the push constants and uniforms that a branch depends on alone, and compiles the
-// shader again each time they are rewritten (each draw or dispatch, each frame), keeping no compiled variant:
-// such branches read them through runtime(), which it cannot see through (no bound buffer holds 2^31 elements).
-uint runtime(uint x) { return x | (uint(control.length()) & 0x80000000u); }
-float runtime(float x) { return uintBitsToFloat(runtime(floatBitsToUint(x))); }
+ARBOR_RUNTIME_OVER(control.length())

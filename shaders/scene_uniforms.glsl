@@ -29,3 +29,11 @@ struct TreeVertex {
 
 
 const float PI = 3.14159265358979;
+
+// lavapipe (Mesa 22.3) inlines the push constants and uniforms that a branch depends on alone, and compiles the
+// shader again each time they are rewritten (each draw or dispatch, each frame), keeping no compiled variant:
+// such branches read them through runtime(), which it cannot see through (no bound buffer holds 2^31 elements).
+// scene.glsl and compute.glsl define it over a buffer every stage that includes them binds.
+#define ARBOR_RUNTIME_OVER(bufferLength)                                            \
+  uint runtime(uint x) { return x | (uint(bufferLength) & 0x80000000u); }          \
+  float runtime(float x) { return uintBitsToFloat(runtime(floatBitsToUint(x))); }
