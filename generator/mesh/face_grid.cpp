@@ -21,7 +21,8 @@ std::uint64_t FaceGrid::key(long x, long y, long z) const {
 // Clamped, and NaN to 0, so that a degenerate box (a band of collapsed corners being tested) is never undefined.
 long FaceGrid::cell(double v) const {
   const double c = std::floor(v / cellSize_);
-  return c >= 0x1p19 ? 1L << 19 : c <= -0x1p19 ? -(1L << 19) : c == c ? static_cast<long>(c) : 0;
+  if (std::isnan(c)) return 0;
+  return static_cast<long>(std::clamp(c, -0x1p19, 0x1p19));
 }
 
 void FaceGrid::build(std::vector<Box> boxes) {

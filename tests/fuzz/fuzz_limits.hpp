@@ -1,9 +1,9 @@
 #pragma once
 // The limits fuzzed trees are held to. Under the sanitizers and coverage a tree meshes 7 to 60 times slower than in
 // a release build (dense clone thickets are the slowest: a fuzzed palm of 65,520 trunk clones, 917,000 quads, took
-// 3.4 s released and 205 s fuzzed), so the product's limits (about 10 s on two cores) would let a valid tree pass
-// the 60 s hang timeout. A twentieth of its quads keeps the largest tree a fuzzer can grow well inside it; the
-// parsers and the mesher's paths are the same at any size.
+// 3.6 s released and 203 s fuzzed), so the product's limits (about 10 s on two cores) would let a valid tree pass
+// the 60 s hang timeout. A fiftieth of its quads keeps the largest tree a fuzzer can grow well inside it (the
+// densest palm found under it: 13 s); the parsers and the mesher's paths are the same at any size.
 #include "growth/growth_model.hpp"
 #include "mesh/mesh_options.hpp"
 
