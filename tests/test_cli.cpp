@@ -422,6 +422,21 @@ TEST_CASE("an OBJ export brings its .mtl and textures beside it, or none with --
   CHECK_FALSE(fs::exists(dir + "/lods.obj"));
 }
 
+TEST_CASE("an OBJ export that cannot be written whole puts none of its files in place", "[cli][mesh]") {
+  const fs::path dir = arbor::test::tempPath("obj-too-large");
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  // Files up to 1,000 KiB: each texture fits (at most 492 KiB), the palm's OBJ (about 2 MB) does not. The signal
+  // for a file past the limit is ignored, so the write fails with EFBIG instead of killing the process.
+  const Result r = arbor::test::runCommand("sh -c \"trap '' XFSZ; ulimit -f 1000; exec " + std::string(ARBOR_BINARY) + " generate palm --quiet --out " +
+                                           (dir / "palm.obj").string() + "\" 2>&1");
+  CHECK(r.exitCode == 1);
+  CHECK_THAT(r.output, Catch::Contains("palm.obj") && Catch::Contains("File too large"));
+  std::vector<std::string> left;
+  for (const auto& entry : fs::directory_iterator(dir)) left.push_back(entry.path().filename().string());
+  CHECK(left.empty());
+}
+
 TEST_CASE("subdivided export has four times the quads per level", "[cli][mesh]") {
   const std::string coarse = arbor::test::tempPath("coarse.obj"), fine = arbor::test::tempPath("fine.obj");
   REQUIRE(run("generate palm --quiet --no-leaves --no-cards --out " + coarse).exitCode == 0);

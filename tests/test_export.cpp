@@ -241,6 +241,30 @@ TEST_CASE("a file copied atomically holds the source's bytes over the old file, 
   }
 }
 
+TEST_CASE("a staged file appears only when committed, and is removed if never committed", "[export][file]") {
+  const std::string path = writeTemp("staged.txt", "the old content");
+  const std::string copied = writeTemp("staged-copy.txt", "the old copy");
+  {
+    StagedFile text = stageFile(path, [](std::ostream& out) { out << "the new content"; });
+    StagedFile copy = stageCopy(path, copied);  // copies what is in place now: the old content
+    CHECK(readFile(path) == "the old content");
+    CHECK(readFile(copied) == "the old copy");
+    copy.commit();
+    text.commit();
+    CHECK_THROWS_AS(text.commit(), std::logic_error);
+  }
+  CHECK(readFile(path) == "the new content");
+  CHECK(readFile(copied) == "the old content");
+  {
+    const StagedFile dropped = stageFile(path, [](std::ostream& out) { out << "never placed"; });
+  }
+  CHECK(readFile(path) == "the new content");
+  for (const auto& entry : std::filesystem::directory_iterator(std::filesystem::path(path).parent_path())) {
+    const std::string name = entry.path().filename().string();
+    if (name.rfind("staged", 0) == 0) CHECK(name.find(".partial-") == std::string::npos);
+  }
+}
+
 TEST_CASE("a write that fails half-way leaves the old file as it was and no partial file", "[export][file]") {
   const std::string path = writeTemp("kept.txt", "the old content");
   const std::string big(std::size_t{6} << 20, 'x');

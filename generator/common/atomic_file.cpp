@@ -190,40 +190,61 @@ void writeFileAtomically(const std::string& path, const std::string& content) {
   writeFileAtomically(path, [&](std::ostream& out) { out.write(content.data(), static_cast<std::streamsize>(content.size())); });
 }
 
-void writeFileAtomically(const std::string& path, const std::function<void(std::ostream&)>& write) {
-  const std::string temporary = path + ".partial-" + std::to_string(::getpid());
-  const PartialFile guard(temporary);
-  try {
-    FileSink sink(temporary, path);
-    std::ostream out(&sink);
-    out.exceptions(std::ios::badbit);  // a failed write throws from the sink: let it through, not a flag
-    write(out);
-    sink.finish();
-  } catch (...) {
-    std::remove(temporary.c_str());
-    throw;
+struct StagedFile::State {
+  std::string path, temporary;
+  PartialFile guard;
+  bool placed = false;
+
+  State(std::string target, std::string partial) : path(std::move(target)), temporary(std::move(partial)), guard(temporary) {}
+  ~State() {
+    if (!placed) std::remove(temporary.c_str());
   }
-  if (std::rename(temporary.c_str(), path.c_str()) != 0) {
+  State(const State&) = delete;
+  State& operator=(const State&) = delete;
+};
+
+StagedFile::StagedFile(std::unique_ptr<State> state) : state_(std::move(state)) {}
+StagedFile::StagedFile(StagedFile&&) noexcept = default;
+StagedFile& StagedFile::operator=(StagedFile&&) noexcept = default;
+StagedFile::~StagedFile() = default;
+
+void StagedFile::commit() {
+  if (!state_ || state_->placed) throw std::logic_error("StagedFile::commit: nothing staged, or committed already");
+  if (std::rename(state_->temporary.c_str(), state_->path.c_str()) != 0) {
     const std::string reason = std::strerror(errno);
-    std::remove(temporary.c_str());
-    throw std::runtime_error(path + ": cannot be written (" + reason + ")");
+    throw std::runtime_error(state_->path + ": cannot be written (" + reason + ")");  // the temporary goes with the state
   }
+  state_->placed = true;
 }
 
-void copyFileAtomically(const std::string& from, const std::string& to) {
+StagedFile stageFile(const std::string& path, const std::function<void(std::ostream&)>& write) {
+  auto state = std::make_unique<StagedFile::State>(path, path + ".partial-" + std::to_string(::getpid()));
+  FileSink sink(state->temporary, path);
+  std::ostream out(&sink);
+  out.exceptions(std::ios::badbit);  // a failed write throws from the sink: let it through, not a flag
+  write(out);
+  sink.finish();
+  return StagedFile(std::move(state));
+}
+
+void writeFileAtomically(const std::string& path, const std::function<void(std::ostream&)>& write) { stageFile(path, write).commit(); }
+
+StagedFile stageCopy(const std::string& from, const std::string& to) {
   const int source = ::open(from.c_str(), O_RDONLY | O_CLOEXEC);
   if (source < 0) throw std::runtime_error(from + ": cannot be opened for reading");
   struct Closer {
     int fd;
     ~Closer() { ::close(fd); }
   } closeSource{source};
-  writeFileAtomically(to, [&](std::ostream& out) {
+  return stageFile(to, [&](std::ostream& out) {
     auto* sink = dynamic_cast<FileSink*>(out.rdbuf());
     if (sink && sink->copyFrom(source)) return;
     // Another kind of stream, or a file system the kernel cannot copy within: through the process.
     out << readFile(from);
   });
 }
+
+void copyFileAtomically(const std::string& from, const std::string& to) { stageCopy(from, to).commit(); }
 
 namespace detail {
 void registerPartialForTest(const std::string& path) { static PartialFile keep(path); }

@@ -6,6 +6,7 @@
 #include <functional>
 #include <charconv>
 #include <cstdint>
+#include <exception>
 #include <initializer_list>
 #include <limits>
 #include <atomic>
@@ -224,31 +225,57 @@ void writeParts(const std::vector<ObjPart>& parts, std::ostream& stream) {
   std::mutex mutex;
   std::condition_variable ready;
   std::atomic<std::size_t> next{0};
+  bool stopped = false;        // the writer failed (a full disk) or a worker did: the workers stop
+  std::exception_ptr failure;  // a worker's, rethrown by the writer
   auto work = [&] {
-    for (std::size_t i = next++; i < blocks.size(); i = next++) {
-      Text out;
-      {
-        std::unique_lock<std::mutex> lock(mutex);
-        ready.wait(lock, [&] { return i < written + window; });
-        if (!spare.empty()) {
-          out = std::move(spare.back());
-          spare.pop_back();
+    try {
+      for (std::size_t i = next++; i < blocks.size(); i = next++) {
+        Text out;
+        {
+          std::unique_lock<std::mutex> lock(mutex);
+          ready.wait(lock, [&] { return stopped || i < written + window; });
+          if (stopped) return;
+          if (!spare.empty()) {
+            out = std::move(spare.back());
+            spare.pop_back();
+          }
         }
+        print(blocks[i], out);
+        const std::lock_guard<std::mutex> lock(mutex);
+        text[i] = std::move(out);
+        printed[i] = 1;
+        ready.notify_all();
       }
-      print(blocks[i], out);
+    } catch (...) {
       const std::lock_guard<std::mutex> lock(mutex);
-      text[i] = std::move(out);
-      printed[i] = 1;
+      failure = std::current_exception();
+      stopped = true;
       ready.notify_all();
     }
   };
-  std::vector<std::thread> workers;
-  for (std::size_t w = 0; w < workerCount; ++w) workers.emplace_back(work);
+  // The workers stopped and joined however the writer leaves: a thread still running when its std::thread is
+  // destroyed ends the process (a write failing half-way aborted instead of reporting the error).
+  struct Workers {
+    std::vector<std::thread> threads;
+    std::mutex& mutex;
+    std::condition_variable& ready;
+    bool& stopped;
+    ~Workers() {
+      {
+        const std::lock_guard<std::mutex> lock(mutex);
+        stopped = true;
+      }
+      ready.notify_all();
+      for (std::thread& t : threads) t.join();
+    }
+  } workers{{}, mutex, ready, stopped};
+  for (std::size_t w = 0; w < workerCount; ++w) workers.threads.emplace_back(work);
   for (std::size_t i = 0; i < blocks.size(); ++i) {
     Text out;
     {
       std::unique_lock<std::mutex> lock(mutex);
-      ready.wait(lock, [&] { return printed[i] != 0; });
+      ready.wait(lock, [&] { return printed[i] != 0 || failure; });
+      if (failure) std::rethrow_exception(failure);
       out = std::move(text[i]);
     }
     preamblesUpTo(blocks[i].part);
@@ -259,7 +286,6 @@ void writeParts(const std::vector<ObjPart>& parts, std::ostream& stream) {
     spare.push_back(std::move(out));
     ready.notify_all();
   }
-  for (std::thread& t : workers) t.join();
   preamblesUpTo(parts.size());
 }
 

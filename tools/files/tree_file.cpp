@@ -3,6 +3,7 @@
 #include <atomic>
 #include <filesystem>
 #include <future>
+#include <vector>
 
 #include "asset_folder.hpp"
 #include "common/atomic_file.hpp"
@@ -60,10 +61,29 @@ void writeTreeFile(const std::string& path, const Skeleton& skeleton, const std:
     assetOptions.leaves = false;  // the OBJ writer makes the cards as it prints them
     assetOptions.branchCards = false;
   }
-  // A glTF's texture files are read, and an OBJ's leaf lines printed, while the tree is meshed (an OBJ's textures
-  // are copied beside it by the kernel).
+  namespace fs = std::filesystem;
+  const fs::path file(path);
+  const std::string stem = file.stem().string();
+  const fs::path folder = file.parent_path();
+  const std::string mtl = obj && options.textures ? stem + ".mtl" : std::string();
+  // A glTF's texture files are read, an OBJ's copied beside it by the kernel (under temporary names) and its leaf
+  // lines printed, while the tree is meshed.
   std::future<AssetTextures> textures;
   if (options.textures && !obj) textures = std::async(std::launch::async, exportTextures);
+  std::future<std::vector<StagedFile>> maps;
+  if (options.textures && obj) {
+    maps = std::async(std::launch::async, [&] {
+      const std::string source = textureFolder();
+      std::string names[3];
+      std::vector<StagedFile> staged;
+      for (std::size_t i = 0; i < 3; ++i) {
+        names[i] = stem + "_" + kTextureFiles[i];
+        staged.push_back(stageCopy(source + kTextureFiles[i], (folder / names[i]).string()));
+      }
+      staged.push_back(stageFile((folder / mtl).string(), [&](std::ostream& out) { out << writeMtl(names[0], names[1], names[2]); }));
+      return staged;
+    });
+  }
   const std::vector<Leaf> noLeaves;
   std::atomic<bool> meshed{false};
   std::future<std::shared_ptr<const ObjLeafLines>> leafLines;
@@ -83,28 +103,17 @@ void writeTreeFile(const std::string& path, const Skeleton& skeleton, const std:
     writeFileAtomically(path, endsWith(path, ".gltf") ? writeGltf(asset) : writeGlb(asset));
     return;
   }
-  namespace fs = std::filesystem;
-  const fs::path file(path);
-  const std::string stem = file.stem().string();
-  const fs::path folder = file.parent_path();
-  std::string mtl;
-  if (options.textures) {
-    // The maps first, the OBJ naming them last: a reader never finds an OBJ whose textures are still missing.
-    const std::string source = textureFolder();
-    std::string names[3];
-    for (std::size_t i = 0; i < 3; ++i) {
-      names[i] = stem + "_" + kTextureFiles[i];
-      copyFileAtomically(source + kTextureFiles[i], (folder / names[i]).string());
-    }
-    mtl = stem + ".mtl";
-    writeFileAtomically((folder / mtl).string(), writeMtl(names[0], names[1], names[2]));
-  }
   const AssetLod& lod = asset.lods.front();
   const std::shared_ptr<const ObjLeafLines> leaves = leafLines.get();
   // Stubs are never meshed, so their cards are there whatever the levels (wheat's grains).
   const std::vector<ImpostorSegment> segments =
       options.asset.branchCards ? leftOutSegments(skeleton, lod.meshedLevels, lod.fakedStems) : std::vector<ImpostorSegment>{};
-  writeFileAtomically(path, [&](std::ostream& out) { writeObjAsset(*lod.bark, segments, *leaves, options.file.triangles, out, options.file.up, mtl); });
+  StagedFile written = stageFile(path, [&](std::ostream& out) { writeObjAsset(*lod.bark, segments, *leaves, options.file.triangles, out, options.file.up, mtl); });
+  // Every file whole before any is put in place (a full disk leaves none of them), then the maps and the .mtl, the
+  // OBJ naming them last: a reader never finds an OBJ whose textures are still missing.
+  if (maps.valid())
+    for (StagedFile& staged : maps.get()) staged.commit();
+  written.commit();
 }
 
 }  // namespace arbor
