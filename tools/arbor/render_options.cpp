@@ -53,6 +53,10 @@ render::TreeTextures treeTextures(float anisotropy) {
   return textures;
 }
 
+render::TreeTextures treeTextures(float anisotropy, const vk::VulkanContext& context) {
+  return treeTextures(anisotropy > 0.0f ? anisotropy : (context.isLavapipe() ? 1.0f : 0.0f));
+}
+
 glm::vec3 parseLight(const std::string& text) {
   const glm::vec2 angles = parseSunAngles(text);
   return render::sunDirection(angles.x, angles.y);

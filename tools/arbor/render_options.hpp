@@ -20,6 +20,9 @@ glm::vec3 parseLight(const std::string& text);
 void addAnisotropyOption(CLI::App* cmd, float& anisotropy, const std::string& byDevice);
 // The textures with the bark filtered as asked (0: TreeTextures' own default).
 render::TreeTextures treeTextures(float anisotropy);
+// The same, where none is asked for (0) filtered for the device: trilinearly on lavapipe, which filters
+// anisotropically in software (a third of the viewer's frame at 8, and ACC at factor 16 four times slower).
+render::TreeTextures treeTextures(float anisotropy, const vk::VulkanContext& context);
 // On when asked for, when ARBOR_VALIDATION=1 (the tests set it), and always in debug builds.
 bool validationWanted(bool flag);
 // What every Vulkan command asks of the context: validation as validationWanted decides, the preferred device.

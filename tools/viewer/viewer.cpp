@@ -44,11 +44,6 @@ void applyDeviceDefaults(const ViewerOptions& o, const vk::VulkanContext& contex
   if (!o.maxTessGiven && context.isLavapipe()) state.settings.maxLevel = 16.0f;
 }
 
-// The textures with the bark filtered as asked, or trilinearly on lavapipe (0: TreeTextures' own default).
-render::TreeTextures viewerTextures(const ViewerOptions& o, const vk::VulkanContext& context) {
-  return cli::treeTextures(o.anisotropy.value_or(context.isLavapipe() ? 1.0f : 0.0f));
-}
-
 // The ground fades into the horizon beyond the forest as seen from the eye.
 float groundRadius(const render::Forest& forest, const render::Camera& camera) {
   return std::max(100.0f, 2.0f * (forest.radius() + glm::length(glm::vec2(camera.eye))));
@@ -107,7 +102,7 @@ int runViewer(const ViewerOptions& o, ViewState& state, ViewerScene& scene) {
   int status = 0;
   {
     const std::unique_ptr<FrameTarget> target = win ? windowTarget(context, *win, surface, o.vsync) : offscreenTarget(context, {o.width, o.height});
-    render::TreeRenderer renderer(context, target->renderPass(), VK_SAMPLE_COUNT_1_BIT, viewerTextures(o, context));
+    render::TreeRenderer renderer(context, target->renderPass(), VK_SAMPLE_COUNT_1_BIT, cli::treeTextures(o.anisotropy.value_or(0.0f), context));
     // However the loop ends, the scene's buffers go before the device does.
     const std::unique_ptr<ViewerScene, void (*)(ViewerScene*)> stopScene(&scene, [](ViewerScene* sc) { sc->stop(); });
     scene.start(context, renderer);
