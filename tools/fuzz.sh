@@ -23,7 +23,7 @@ else
   limit=(-max_total_time="$seconds")
 fi
 targets=("$@")
-((${#targets[@]})) || targets=(species_json species_xml graph_json skeleton_json camera_path events cli_values)
+((${#targets[@]})) || targets=(species_json species_xml graph_json skeleton_json lsystem space_colonization camera_path events cli_values)
 
 bash "$root/tools/install-deps.sh" --fuzz
 cmake -S "$root" -B "$root/build-fuzz" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_C_COMPILER=clang-14 -DCMAKE_CXX_COMPILER=clang++-14 \
@@ -38,7 +38,7 @@ for t in "${targets[@]}"; do
   mkdir -p "$work" "$findings"
   # CI: runs sized to about a minute each on two cores; growing trees makes the species targets slower per input.
   if ((ci)); then
-    case "$t" in species_json | species_xml | graph_json | skeleton_json) runs=20000 ;; *) runs=1000000 ;; esac
+    case "$t" in species_json | species_xml | graph_json | skeleton_json) runs=20000 ;; lsystem) runs=1000 ;; space_colonization) runs=50000 ;; *) runs=1000000 ;; esac
     limit=(-seed=1 -runs="$runs")
     rm -rf "$work" && mkdir -p "$work"  # the same start every time
   fi
