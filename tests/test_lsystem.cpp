@@ -264,6 +264,7 @@ TEST_CASE("bad grammars are refused with file, line and column", "[lsystem]") {
   CHECK_THAT(parse("axiom: F\n"), Catch::Contains("field 'n'"));
   CHECK_THAT(parse("n: 1\naxiom: F\ndleta: 3\n"), Catch::Contains("did you mean 'delta:'"));
   CHECK_THAT(parse("n: 1.5\naxiom: F\n"), Catch::Contains("line 1, column 4") && Catch::Contains("whole number"));
+  CHECK_THAT(parse("n: 1\nsize: 1e9\naxiom: F\n"), Catch::Contains("line 2, column 7") && Catch::Contains("at most 100000 m"));
   CHECK_THAT(parse("n: 1\naxiom: F\nA -> B(sin(1,2))\n"), Catch::Contains("line 3"));
   CHECK_THAT(parse("n: 1\naxiom: F\nA -> B(" + std::string(300, '(') + "1" + std::string(300, ')') + ")\n"),
              Catch::Contains("deeper than 100"));
@@ -278,6 +279,18 @@ TEST_CASE("bad grammars are refused with file, line and column", "[lsystem]") {
   } catch (const LimitError& e) {
     CHECK_THAT(std::string(e.what()), Catch::Contains("derivation step 10") && Catch::Contains("1000 modules"));
   }
+}
+
+TEST_CASE("a grammar whose turtle walks out of the mesh's reach is refused, not meshed into NaN", "[lsystem]") {
+  // Unscaled (no size:), each F a million kilometres: the nodes pass kMaxCoordinate, which every model's growth checks.
+  const TreeModel far = readLsystemModel("name: far\nn: 1\nd: 1e9\naxiom: F\nF -> FFF\n", "far.lsys");
+  try {
+    far.grow({});
+    FAIL("no GenerationError");
+  } catch (const GenerationError& e) {
+    CHECK_THAT(std::string(e.what()), Catch::Contains("far: a node lies at") && Catch::Contains("within 100000 m"));
+  }
+  CHECK(readLsystemModel("name: near\nn: 1\nd: 1000\naxiom: F\nF -> FFF\n", "near.lsys").grow({}).nodes.size() > 1);
 }
 
 TEST_CASE("every preset parses, derives, draws and meshes to a closed quad manifold", "[lsystem]") {

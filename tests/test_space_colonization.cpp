@@ -625,6 +625,11 @@ TEST_CASE("bad files are refused naming the field", "[sc]") {
         "obstacles[0].radius");
   CHECK(refusedField(with("\"trunk\"", "\"gravity\": -1, \"trunk\"")) == "gravity");
   CHECK(refusedField(with("\"trunk\"", "\"colors\": 1, \"trunk\"")) == "colors");
+  // Positions past kMaxCoordinate (a fuzzed trunk 5.6e101 m out meshed into NaN vertices): refused where they are named.
+  CHECK(refusedField(with("\"segments\": 5", "\"base\": [5.6e101, 0, 0], \"segments\": 5")) == "trunk.base[0]");
+  CHECK(refusedField(with("\"center\": [0, 0, 2]", "\"center\": [0, -2e5, 2]")) == "clouds[0].center[1]");
+  CHECK(refusedField(with("\"trunk\"", "\"obstacles\": [{\"shape\": \"sphere\", \"center\": [0, 0, 1e6], \"radius\": 1}], \"trunk\"")) ==
+        "obstacles[0].center[2]");
   CHECK(readSpaceColonizationModel(good, "models/oak-crown.json").name() == "oak-crown");  // no name: the file's stem
 
   // An OBJ obstacle that is not closed: refused naming the obstacle's file field.

@@ -71,7 +71,8 @@ class TreeModel {
   const char* model() const { return params_->model(); }
   std::string name() const { return params_->name(); }
   int levels() const { return params_->levels(); }
-  Skeleton grow(const GrowthOptions& options) const { return params_->grow(options); }
+  // The model's tree, refused (GenerationError) where a node lies past kMaxCoordinate or is not finite.
+  Skeleton grow(const GrowthOptions& options) const;
   TreeEstimate estimate(int levels = 0) const { return params_->estimate(levels); }
   std::string toJson() const { return params_->toJson(); }
   std::vector<ModelParameter> parameters() const { return params_->parameters(); }

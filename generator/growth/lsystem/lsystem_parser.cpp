@@ -8,6 +8,7 @@
 #include "common/input_error.hpp"
 #include "common/text_util.hpp"
 #include "lsystem.hpp"
+#include "growth/tree_limits.hpp"
 
 namespace arbor::lsys {
 
@@ -269,7 +270,12 @@ class GrammarReader {
       else if (key == "d") { if (v == 0) r.fail("d is 0: the turtle would not move", at); system_.step = v; }
       else if (key == "width") positive(0), system_.width = v;
       else if (key == "width-factor") positive(0), system_.widthFactor = v;
-      else if (key == "size") positive(0), system_.size = v;
+      else if (key == "size") {
+        positive(0);
+        // The tree's extent: past kMaxCoordinate the mesh's float positions no longer resolve a twig.
+        if (v > kMaxCoordinate) r.fail("size is " + formatNumber(v) + " m; at most " + formatNumber(kMaxCoordinate) + " m is allowed", at);
+        system_.size = v;
+      }
       else if (key == "tip-radius") { if (!(v > 0)) r.fail("tip-radius must be above 0", at); system_.tipRadius = v; }
     }
   }

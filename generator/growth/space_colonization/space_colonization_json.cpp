@@ -32,7 +32,7 @@ AttractionCloud readCloud(const json& c, const std::string& file, const std::str
   jf::object(c, file, prefix.substr(0, prefix.size() - 1));
   AttractionCloud cloud;
   const std::string shape = jf::string(jf::member(c, "shape", file, prefix, "sphere, ellipsoid, cone or box"), file, prefix + "shape");
-  cloud.center = jf::vec3(jf::member(c, "center", file, prefix, "[x, y, z]"), file, prefix + "center");
+  cloud.center = jf::position(jf::member(c, "center", file, prefix, "[x, y, z]"), file, prefix + "center");
   if (shape == "sphere") {
     jf::onlyKeys(c, {"shape", "center", "radius", "points", "influence", "kill"}, file, prefix);
     cloud.shape = CloudShape::Sphere;
@@ -70,12 +70,12 @@ Obstacle readObstacle(const json& o, const std::string& file, const std::string&
   if (shape == "box") {
     jf::onlyKeys(o, {"shape", "center", "size"}, file, prefix);
     obstacle.shape = ObstacleShape::Box;
-    obstacle.center = jf::vec3(jf::member(o, "center", file, prefix, "[x, y, z]"), file, prefix + "center");
+    obstacle.center = jf::position(jf::member(o, "center", file, prefix, "[x, y, z]"), file, prefix + "center");
     obstacle.size = positiveVec3(o, "size", file, prefix);
   } else if (shape == "sphere") {
     jf::onlyKeys(o, {"shape", "center", "radius"}, file, prefix);
     obstacle.shape = ObstacleShape::Sphere;
-    obstacle.center = jf::vec3(jf::member(o, "center", file, prefix, "[x, y, z]"), file, prefix + "center");
+    obstacle.center = jf::position(jf::member(o, "center", file, prefix, "[x, y, z]"), file, prefix + "center");
     obstacle.size = Vec3(positive(o, "radius", file, prefix));
   } else if (shape == "mesh") {
     jf::onlyKeys(o, {"shape", "file"}, file, prefix);
@@ -105,7 +105,7 @@ SpaceColonization readSpaceColonization(const std::string& text, const std::stri
 
   const json& trunk = jf::object(jf::member(root, "trunk", file, "", "an object: base, segments, width"), file, "trunk");
   jf::onlyKeys(trunk, {"base", "segments", "width"}, file, "trunk.");
-  if (trunk.contains("base")) m.trunkBase = jf::vec3(trunk.at("base"), file, "trunk.base");
+  if (trunk.contains("base")) m.trunkBase = jf::position(trunk.at("base"), file, "trunk.base");
   m.trunkSegments = static_cast<int>(jf::integer(jf::member(trunk, "segments", file, "trunk.", "1 to 10000"), file, "trunk.segments", 1, 10000, "1 to 10000"));
   m.trunkWidth = positive(trunk, "width", file, "trunk.");
 
