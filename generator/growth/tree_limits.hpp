@@ -13,6 +13,7 @@ struct TreeLimits {
   std::size_t nodes = 1'500'000;   // skeleton nodes (counted as grown: every joint, stem base and branch point with its two neighbours)
   std::size_t leaves = 2'000'000;
   std::size_t quads = 2'500'000;   // mesh quads (also after subdivision for export)
+  std::size_t modules = 0;         // L-system modules a derivation step may make, below the grammar's own `limit:` (0: that alone)
 };
 
 // How far from the origin a node of a skeleton or branch graph file may lie, on each axis (metres): a mesh's float

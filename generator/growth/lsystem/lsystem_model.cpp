@@ -44,7 +44,7 @@ class LsystemParams final : public ModelParams {
     graph.species = system_.name;
     graph.tipRadius = system_.tipRadius;
     // Internodes are counted before the turtle runs: the conversion merges about ten into one skeleton node.
-    Skeleton s = graphToSkeleton(lsystemGraph(system_, options.seed, 10 * options.limits.nodes), graph);
+    Skeleton s = graphToSkeleton(lsystemGraph(system_, options.seed, 10 * options.limits.nodes, options.limits.modules), graph);
     s.seed = options.seed;
     if (s.nodes.size() > options.limits.nodes)
       throw GenerationError("l-system '" + system_.name + "': " + std::to_string(s.nodes.size()) + " skeleton nodes, more than the limit of " +
@@ -195,9 +195,10 @@ class LsystemParams final : public ModelParams {
 
 }  // namespace
 
-BranchGraph lsystemGraph(const Lsystem& system, std::uint64_t seed, std::size_t maxInternodes) {
+BranchGraph lsystemGraph(const Lsystem& system, std::uint64_t seed, std::size_t maxInternodes, std::size_t moduleCap) {
   lsys::DeriveOptions options;
   options.seed = derivationSeed(system, seed);
+  if (moduleCap > 0) options.moduleLimit = std::min(system.moduleLimit, moduleCap);
   const lsys::ModuleString str = lsys::derive(system, options);
   const auto internodes = static_cast<std::size_t>(
       std::count_if(str.modules.begin(), str.modules.end(), [](const lsys::Module& m) { return m.symbol == 'F'; }));

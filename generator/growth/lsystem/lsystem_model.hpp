@@ -20,6 +20,6 @@ const lsys::Lsystem* lsystemOf(const TreeModel& model);
 
 // The grammar derived (seed: the file's + seed - 1) and interpreted as grow() does, before the skeleton: the
 // branch graph scaled by `size:`, for tools and tests. A GenerationError past maxInternodes drawn (F modules).
-BranchGraph lsystemGraph(const lsys::Lsystem& system, std::uint64_t seed, std::size_t maxInternodes = SIZE_MAX);
+BranchGraph lsystemGraph(const lsys::Lsystem& system, std::uint64_t seed, std::size_t maxInternodes = SIZE_MAX, std::size_t moduleCap = 0);
 
 }  // namespace arbor
