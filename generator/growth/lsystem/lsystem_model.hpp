@@ -19,7 +19,8 @@ TreeModel readLsystemModel(const std::string& text, const std::string& file, con
 const lsys::Lsystem* lsystemOf(const TreeModel& model);
 
 // The grammar derived (seed: the file's + seed - 1) and interpreted as grow() does, before the skeleton: the
-// branch graph scaled by `size:`, for tools and tests. A GenerationError past maxInternodes drawn (F modules).
+// branch graph scaled by `size:`, for tools and tests. A GenerationError past maxInternodes drawn (F modules);
+// moduleCap (> 0, TreeLimits::modules) lowers the grammar's own module limit for the derivation.
 BranchGraph lsystemGraph(const lsys::Lsystem& system, std::uint64_t seed, std::size_t maxInternodes = SIZE_MAX, std::size_t moduleCap = 0);
 
 }  // namespace arbor
