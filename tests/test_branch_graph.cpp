@@ -603,6 +603,24 @@ TEST_CASE("a tip bending away within a radius of the cross section before it tur
   CHECK(checkSelfIntersections(tree, one.skeleton).folds == 0);
 }
 
+TEST_CASE("twigs in a graph 36 km across keep their own radii: the thinnest cross section follows the thinnest stem", "[graph][mesh]") {
+  // The graph_json fuzzer's tree, cut down: a zig-zag trunk 3 cm thick whose twigs are 1 cm, one of them running
+  // out 36.7 km and back. Sized at 1e-5 of the tree's reach, every cross section was 0.37 m wide and the mesh NaN.
+  BranchGraph g;
+  g.nodes = {at(0, 0, 0, -1, 0.03), at(0, 0, 1, 0),        at(5, 0, 2.5, 1),        at(0, 0, 2, 2),
+             at(5, 0, 2.5, 3),      at(0.6, 0, 2.7, 3),    at(0.9, 0, 2.8, 5),      at(-0.3, 0, 2.6, 4),
+             at(-0.6, 0, 2.7, 7),   at(-0.9, 0, 2.8, 8),   at(-36749.1, 0, 2.9, 8), at(-1.7, 0, 3.0, 10),
+             at(-2.0, 0, 3.1, 11)};
+  const Skeleton s = graphToSkeleton(g, unmerged());
+  REQUIRE(s.treeScale > 36000.0);
+  const TreeMesh tree = buildTreeMesh(s);
+  test::checkClosedManifold(tree.mesh);
+  for (const glm::vec3& p : tree.mesh.positions) REQUIRE(std::isfinite(p.x + p.y + p.z));
+  double thickest = 0.0;
+  for (const SkeletonStem& st : s.stems) thickest = std::max(thickest, st.startRadius);
+  for (const MeshRing& ring : tree.rings) CHECK(ring.radius <= thickest);
+}
+
 TEST_CASE("smoothing moves no branch point, tip or root, and does move the rest", "[graph]") {
   GraphOptions o = unmerged();
   o.smoothingPasses = 5;

@@ -159,6 +159,11 @@ class Builder {
       if (st.cloneOf >= 0) clones_[static_cast<std::size_t>(st.cloneOf)].push_back(static_cast<int>(i));
       else if (st.parentStem >= 0) children_[static_cast<std::size_t>(st.parentStem)].push_back(static_cast<int>(i));
     }
+    resolution_ = 1e-5 * sk_.treeScale;
+    for (std::size_t i = 0; i < sk_.stems.size(); ++i) {
+      const double r = sk_.stems[i].startRadius;
+      if (meshed(static_cast<int>(i)) && r > 0.0) resolution_ = std::min(resolution_, r);
+    }
     branching_ = bearingStems();
     layJointAxes();
     for (std::size_t i = 0; i < sk_.stems.size(); ++i) {
@@ -196,6 +201,9 @@ class Builder {
   const Skeleton& sk_;
   const MeshOptions& opt_;
   TreeMesh& out_;
+  // The thinnest cross section the mesh makes (tapered tips keep four distinct corners): 1e-5 of the tree, but
+  // no thicker than its thinnest stem starts (twigs in a graph 36 km across were swollen past their parents).
+  double resolution_ = 0.0;
   std::vector<std::vector<int>> stemsAt_;  // per node: meshed stems whose first edge leaves it
   std::vector<bool> branching_;            // per stem: whether it or a clone after it has a meshed child (not a twig)
   std::vector<std::vector<int>> clones_;   // per stem: its meshed clones
@@ -630,7 +638,7 @@ class Builder {
     if (s >= 0.5 * poly.length()) return std::nullopt;
     const Vec3 center = poly.position(s);
     const RingFrame frame = transportFrame(port.frame, poly.direction(s));
-    const double radius = std::max(poly.radius(s), 1e-5 * sk_.treeScale);
+    const double radius = std::max(poly.radius(s), resolution_);
     const auto offsets = ringOffsets(frame, radius * opt_.limitCompensation);
     const std::array<Vec3, 4> corners{center + offsets[0], center + offsets[1], center + offsets[2], center + offsets[3]};
     // Outwards: the new corners above the side, the inset's behind the new cross section.
@@ -871,7 +879,7 @@ class Builder {
   // Corners of the cross section a stem would get at arc length s, continuing from `from` (at least minRadius).
   std::array<Vec3, 4> ringCorners(const StemPolyline& poly, const RingFrame& from, double s, double minRadius = 0.0) const {
     const RingFrame frame = transportFrame(from, poly.direction(s));
-    const auto offsets = ringOffsets(frame, std::max({poly.radius(s), minRadius, 1e-5 * sk_.treeScale}) * opt_.limitCompensation);
+    const auto offsets = ringOffsets(frame, std::max({poly.radius(s), minRadius, resolution_}) * opt_.limitCompensation);
     const Vec3 c = poly.position(s);
     return {c + offsets[0], c + offsets[1], c + offsets[2], c + offsets[3]};
   }
@@ -1003,7 +1011,7 @@ class Builder {
 
   // Distance kept between plain cross sections: half the local radius (never zero on hair-thin twigs).
   double gapAt(const StemPolyline& poly, double s) const {
-    return std::max(0.5 * poly.radius(std::min(s, poly.length())), 1e-6 * sk_.treeScale);
+    return std::max(0.5 * poly.radius(std::min(s, poly.length())), 0.1 * resolution_);
   }
 
   // Connection slabs centred on their attachments, never pushed along the stem (a pushed slab's first
@@ -1022,7 +1030,7 @@ class Builder {
       if (node == st.attachNode || node == lastNode) continue;
       const auto& children = stemsAt_[static_cast<std::size_t>(node)];
       if (children.empty()) continue;
-      const double ra = std::max(poly.radius(poly.arcLength(i) - 1e-9), 1e-6 * sk_.treeScale);
+      const double ra = std::max(poly.radius(poly.arcLength(i) - 1e-9), 0.1 * resolution_);
       const double rc = widestStart(children);
       const double h = slabHalfHeight(rc, ra);
       const double hMin = 0.15 * ra;
@@ -1455,7 +1463,7 @@ class Builder {
   Ring makeRing(int stem, const StemPolyline& poly, const Ring& last, double s, double minRadius = 0.0, bool keepFrame = false,
                 std::optional<Vec3> axis = std::nullopt) {
     const Vec3 p = poly.position(s);
-    const double r = std::max({poly.radius(s), minRadius, 1e-5 * sk_.treeScale});
+    const double r = std::max({poly.radius(s), minRadius, resolution_});
     const RingFrame frame = keepFrame ? last.frame : transportFrame(last.frame, axis.value_or(poly.direction(s)));
     return emitRing(stem, p, frame, r, last.tex + barkTextureAdvance(glm::distance(p, last.center), 0.5 * (r + last.radius)), s);
   }
@@ -1831,7 +1839,7 @@ class Builder {
     std::vector<Group> groups;
     for (const auto& [x, node] : along) {
       const auto& children = stemsAt_[static_cast<std::size_t>(node)];
-      const double ra = std::max(sk_.nodes[static_cast<std::size_t>(node)].radius, 1e-6 * sk_.treeScale);
+      const double ra = std::max(sk_.nodes[static_cast<std::size_t>(node)].radius, 0.1 * resolution_);
       // A slab's half height, but at most a fifth of the band; centred at least 1.5 of it in.
       const double h = std::min(slabHalfHeight(widestStart(children), ra), 0.2 * len);
       const double at = std::clamp(x, 1.5 * h, len - 1.5 * h);
