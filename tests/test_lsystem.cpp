@@ -288,7 +288,7 @@ TEST_CASE("a grammar whose turtle walks out of the mesh's reach is refused, not 
     far.grow({});
     FAIL("no GenerationError");
   } catch (const GenerationError& e) {
-    CHECK_THAT(std::string(e.what()), Catch::Contains("far: a node lies at") && Catch::Contains("within 100000 m"));
+    CHECK_THAT(std::string(e.what()), Catch::Contains("far: a node on axis") && Catch::Contains("within 100000 m"));
   }
   CHECK(readLsystemModel("name: near\nn: 1\nd: 1000\naxiom: F\nF -> FFF\n", "near.lsys").grow({}).nodes.size() > 1);
 }

@@ -1,9 +1,7 @@
 #include "growth_model.hpp"
 
-#include <cmath>
 #include <stdexcept>
 
-#include "common/text_util.hpp"
 
 namespace arbor {
 
@@ -17,10 +15,8 @@ Skeleton TreeModel::grow(const GrowthOptions& options) const {
   // colonization fuzzed with its trunk 5.6e101 m out meshed into NaN vertices).
   for (const SkeletonNode& node : skeleton.nodes) {
     for (int k = 0; k < 3; ++k) {
-      if (!(std::abs(node.world.position[k]) <= kMaxCoordinate)) {
-        throw GenerationError(name() + ": a node lies at " + formatNumber(node.world.position[k]) + " m on axis " + std::to_string(k) +
-                              "; allowed: within " + formatNumber(kMaxCoordinate) +
-                              " m of the origin on each axis (the mesh's float positions resolve 8 mm there)");
+      if (const std::string why = outOfReach(node.world.position[k]); !why.empty()) {
+        throw GenerationError(name() + ": a node on axis " + std::to_string(k) + " at " + why);
       }
     }
   }

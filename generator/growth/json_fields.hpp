@@ -124,10 +124,7 @@ inline Vec3 vec3(const json& v, const std::string& file, const std::string& fiel
 inline Vec3 position(const json& v, const std::string& file, const std::string& field) {
   const Vec3 p = vec3(v, file, field);
   for (int k = 0; k < 3; ++k) {
-    if (std::abs(p[k]) > kMaxCoordinate) {
-      throw InputError(file, field + "[" + std::to_string(k) + "]", formatNumber(p[k]) + " m lies too far from the origin; allowed: within " +
-                                                                         formatNumber(kMaxCoordinate) + " m on each axis (the mesh's float positions resolve 8 mm there)");
-    }
+    if (const std::string why = outOfReach(p[k]); !why.empty()) throw InputError(file, field + "[" + std::to_string(k) + "]", why);
   }
   return p;
 }

@@ -1,6 +1,9 @@
 #include "tree_limits.hpp"
 
+#include <cmath>
 #include <cstdio>
+
+#include "common/text_util.hpp"
 
 namespace arbor {
 
@@ -13,6 +16,12 @@ std::string number(double x) {
 }
 
 }  // namespace
+
+std::string outOfReach(double coordinate) {
+  if (std::abs(coordinate) <= kMaxCoordinate) return "";
+  return formatNumber(coordinate) + " m lies too far from the origin; allowed: within " + formatNumber(kMaxCoordinate) +
+         " m on each axis (the mesh's float positions resolve 8 mm there)";
+}
 
 std::string TreeEstimate::excess(const TreeLimits& limits, double margin) const {
   if (nodes > margin * static_cast<double>(limits.nodes)) {

@@ -20,6 +20,9 @@ struct TreeLimits {
 // positions still resolve 8 mm there; at 10,000 km they resolve a metre, and a twig's cross sections collapse.
 inline constexpr double kMaxCoordinate = 100000.0;
 
+// Why a coordinate (metres, on one axis) is out of the mesh's reach: past kMaxCoordinate or not finite; "" if within.
+std::string outOfReach(double coordinate);
+
 struct TreeEstimate {
   std::vector<double> stemsPerLevel;
   std::vector<double> nodesPerLevel;

@@ -2,13 +2,13 @@
 
 #include <algorithm>
 #include <array>
-#include <atomic>
 #include <chrono>
 #include <optional>
 #include <thread>
 #include <tuple>
 #include <unordered_map>
 
+#include "common/parallel.hpp"
 #include "quad_bvh.hpp"
 #include "stem_capsules.hpp"
 
@@ -311,22 +311,6 @@ namespace {
 // How many threads overlappingPairs takes for `items` items: one below `threadsFrom`, else every core.
 unsigned threadsFor(std::size_t items, std::size_t threadsFrom) {
   return items < threadsFrom ? 1u : std::clamp(std::thread::hardware_concurrency(), 1u, 16u);
-}
-
-// task(k, t) for every k < count on thread t of `threads`, each taking the next k in turn.
-template <class Task>
-void inParallel(std::size_t count, unsigned threads, Task&& task) {
-  std::atomic<std::size_t> next{0};
-  auto work = [&](unsigned t) {
-    for (std::size_t k = next++; k < count; k = next++) task(k, t);
-  };
-  if (threads == 1) {
-    work(0);
-    return;
-  }
-  std::vector<std::thread> pool;
-  for (unsigned t = 0; t < threads; ++t) pool.emplace_back(work, t);
-  for (std::thread& t : pool) t.join();
 }
 
 // The hits of all threads together, sorted.
