@@ -224,17 +224,17 @@ TEST_CASE("a file written atomically holds exactly what was streamed, with no bl
   CHECK(static_cast<std::size_t>(info.st_blocks) * 512 < expected.size() + (std::size_t{64} << 10));
 }
 
-TEST_CASE("a file copied atomically holds the source's bytes over the old file, and a missing source changes nothing", "[export][file]") {
+TEST_CASE("a staged copy, committed, holds the source's bytes over the old file, and a missing source changes nothing", "[export][file]") {
   std::string bytes(std::size_t{3} << 20, '\0');  // past the sink's buffer, with every byte value
   for (std::size_t i = 0; i < bytes.size(); ++i) bytes[i] = static_cast<char>((i * 2654435761u) >> 13);
   const std::string from = writeTemp("copy-source.bin", bytes);
   const std::string to = writeTemp("copy-target.bin", "the old content, longer than nothing");
-  copyFileAtomically(from, to);
+  stageCopy(from, to).commit();
   CHECK(readFile(to) == bytes);
-  copyFileAtomically(writeTemp("copy-empty.bin", ""), to);
+  stageCopy(writeTemp("copy-empty.bin", ""), to).commit();
   CHECK(readFile(to).empty());
   const std::string missing = test::tempPath("no-such-texture.png");
-  CHECK_THROWS_WITH(copyFileAtomically(missing, to), Catch::Contains(missing));
+  CHECK_THROWS_WITH(stageCopy(missing, to).commit(), Catch::Contains(missing));
   CHECK(readFile(to).empty());
   for (const auto& entry : std::filesystem::directory_iterator(std::filesystem::path(to).parent_path())) {
     CHECK(entry.path().filename().string().rfind("copy-target.bin.partial-", 0) == std::string::npos);

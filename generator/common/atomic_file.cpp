@@ -244,8 +244,6 @@ StagedFile stageCopy(const std::string& from, const std::string& to) {
   });
 }
 
-void copyFileAtomically(const std::string& from, const std::string& to) { stageCopy(from, to).commit(); }
-
 namespace detail {
 void registerPartialForTest(const std::string& path) { static PartialFile keep(path); }
 }  // namespace detail

@@ -15,10 +15,6 @@ void writeFileAtomically(const std::string& path, const std::function<void(std::
 
 std::string readFile(const std::string& path);  // throws std::runtime_error naming the path
 
-// `from` copied to `to` as writeFileAtomically writes, the bytes moved by the kernel (copy_file_range) where it
-// can: an OBJ's textures never pass through the process. Throws std::runtime_error naming the path.
-void copyFileAtomically(const std::string& from, const std::string& to);
-
 // A file written whole under a temporary name beside its path and put in place only by commit(): files made on
 // another thread, while the caller still works, appear in the order the caller commits them (an OBJ's textures
 // before the OBJ). Never committed (the work failed), the temporary file is removed.
@@ -38,8 +34,10 @@ class StagedFile {
   std::unique_ptr<State> state_;
 };
 
-// writeFileAtomically and copyFileAtomically, less the final rename.
+// writeFileAtomically, less the final rename.
 StagedFile stageFile(const std::string& path, const std::function<void(std::ostream&)>& write);
+// `from` copied to `to`'s temporary name, the bytes moved by the kernel (copy_file_range) where it can: an OBJ's
+// textures never pass through the process. Throws std::runtime_error naming the path.
 StagedFile stageCopy(const std::string& from, const std::string& to);
 
 namespace detail {
