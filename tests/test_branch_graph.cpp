@@ -818,6 +818,13 @@ TEST_CASE("bad skeleton files are refused naming the file and field", "[graph][j
   CHECK_THAT(read(replaced("\"position\": [", "\"position\": [200000")), Catch::Contains("nodes[0].position[0]") && Catch::Contains("within 100000 m"));
   CHECK_THAT(read(replaced("\"firstNode\": 0", "\"firstNode\": 1")), Catch::StartsWith("s.json: "));
   CHECK_THAT(read(good.substr(0, good.size() / 2)), Catch::StartsWith("s.json: ") && Catch::Contains("invalid JSON"));
+  // A stem's second point on its first (the skeleton_json fuzzer's trunk): no direction between them, NaN vertices.
+  nlohmann::json coincident = nlohmann::json::parse(good);
+  const int first = coincident["stems"][0]["firstNode"];
+  coincident["nodes"][first + 1]["position"] = coincident["nodes"][first]["position"];
+  CHECK_THAT(read(coincident.dump()), Catch::Contains("nodes[" + std::to_string(first + 1) + "].position") &&
+                                           Catch::Contains("from node " + std::to_string(first) + " before it on stem 0") &&
+                                           Catch::Contains("more than 1e-9 of the tree's size"));
 }
 
 namespace {

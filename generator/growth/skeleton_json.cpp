@@ -232,6 +232,14 @@ Skeleton readSkeletonJson(const std::string& text, const std::string& file) {
     s.nodes.push_back(node);
   }
 
+  // Points of a stem closer than this have no direction between them (a fuzzed trunk's first edge normalised to NaN).
+  Vec3 low(0.0), high(0.0);
+  for (std::size_t i = 0; i < s.nodes.size(); ++i) {
+    low = i == 0 ? s.nodes[i].world.position : glm::min(low, s.nodes[i].world.position);
+    high = i == 0 ? s.nodes[i].world.position : glm::max(high, s.nodes[i].world.position);
+  }
+  const double size = glm::distance(low, high), apart = 1e-9 * size;
+
   s.stems.reserve(stems.size());
   for (std::size_t i = 0; i < stems.size(); ++i) {
     const std::string at = "stems[" + std::to_string(i) + "].";
@@ -263,6 +271,15 @@ Skeleton readSkeletonJson(const std::string& text, const std::string& file) {
     for (std::int32_t k = stem.firstNode; k < stem.firstNode + stem.nodeCount; ++k) {
       if (s.nodes[static_cast<std::size_t>(k)].stem != static_cast<std::int32_t>(i)) {
         throw InputError(file, "nodes[" + std::to_string(k) + "].stem", "not " + std::to_string(i) + ", the stem whose nodes it is among");
+      }
+    }
+    for (std::int32_t k = stem.firstNode, before = stem.attachNode; k < stem.firstNode + stem.nodeCount; before = k++) {
+      if (before < 0) continue;
+      const double d = glm::distance(s.nodes[static_cast<std::size_t>(before)].world.position, s.nodes[static_cast<std::size_t>(k)].world.position);
+      if (!(d > apart)) {
+        throw InputError(file, "nodes[" + std::to_string(k) + "].position",
+                         formatNumber(d) + " m from node " + std::to_string(before) + " before it on stem " + std::to_string(i) +
+                             "; a stem's points must be more than 1e-9 of the tree's size (" + formatNumber(size) + " m) apart");
       }
     }
     stem.length = num(st, "length", at, 0.0, kBig, "a length >= 0");
