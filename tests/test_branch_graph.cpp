@@ -825,6 +825,12 @@ TEST_CASE("bad skeleton files are refused naming the file and field", "[graph][j
   CHECK_THAT(read(coincident.dump()), Catch::Contains("nodes[" + std::to_string(first + 1) + "].position") &&
                                            Catch::Contains("from node " + std::to_string(first) + " before it on stem 0") &&
                                            Catch::Contains("more than 1e-9 of the tree's size"));
+  // A meshed stem of no width: its cross sections collapse into a point.
+  nlohmann::json thin = nlohmann::json::parse(good);
+  thin["stems"][0]["startRadius"] = 0.0;
+  CHECK_THAT(read(thin.dump()), Catch::Contains("stems[0].startRadius") && Catch::Contains("\"stub\": true"));
+  for (auto& stem : thin["stems"]) stem["stub"] = true;  // what grows from a stub is a stub
+  CHECK(read(thin.dump()).empty());
 }
 
 namespace {

@@ -293,6 +293,10 @@ Skeleton readSkeletonJson(const std::string& text, const std::string& file) {
       if (!it->is_boolean()) throw InputError(file, at + "stub", typeName(*it) + " is not allowed; give true or false");
       stem.stub = it->get<bool>();
     }
+    // A tube of no width has no surface: its cross sections collapse into one point (a fuzzed palm's did).
+    if (!stem.stub && !(stem.startRadius > 0.0)) {
+      throw InputError(file, at + "startRadius", "0 on a stem the mesh makes a tube of; give a radius > 0, or \"stub\": true to draw it as a card");
+    }
     s.stems.push_back(std::move(stem));
   }
   // What grows from a stub is drawn with it as cards; a tube there would have no parent surface to leave from.
