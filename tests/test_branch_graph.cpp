@@ -825,6 +825,23 @@ TEST_CASE("bad skeleton files are refused naming the file and field", "[graph][j
   CHECK_THAT(read(coincident.dump()), Catch::Contains("nodes[" + std::to_string(first + 1) + "].position") &&
                                            Catch::Contains("from node " + std::to_string(first) + " before it on stem 0") &&
                                            Catch::Contains("more than 1e-9 of the tree's size"));
+  // Stems come after what they grow from, so their parents lead to a trunk (a parent cycle hung the mesher).
+  nlohmann::json cycle = nlohmann::json::parse(good);
+  REQUIRE(cycle["stems"].size() >= 2);
+  cycle["stems"][0]["parent"] = 1;
+  CHECK_THAT(read(cycle.dump()), Catch::Contains("stems[0].parent") && Catch::Contains("an earlier stem"));
+  // A child leaves a node of its parent, not of another stem: a twig of a branch moved onto the trunk.
+  BranchGraph h;
+  h.nodes = {at(0, 0, 0, -1),      at(0, 0, 1, 0),        at(0, 0, 2, 1),       at(0.6, 0, 1.4, 1),   at(1.2, 0, 1.8, 3),
+             at(1.4, 0.6, 2.2, 3), at(0, 0, 3, 2),        at(0.5, 0, 2.8, 2),   at(-0.5, 0, 2.8, 2)};
+  nlohmann::json elsewhere = nlohmann::json::parse(writeSkeletonJson(graphToSkeleton(h, unmerged())));
+  CHECK(read(elsewhere.dump()).empty());
+  nlohmann::json& twig = elsewhere["stems"].back();
+  REQUIRE(twig["parent"].get<int>() > 0);
+  twig["attachNode"] = 0;
+  REQUIRE(elsewhere["nodes"][0]["stem"] == 0);
+  CHECK_THAT(read(elsewhere.dump()), Catch::Contains("stems[" + std::to_string(elsewhere["stems"].size() - 1) + "].attachNode") &&
+                                         Catch::Contains("node 0 is on stem 0; a child leaves a node of its parent"));
   // A meshed stem of no width: its cross sections collapse into a point.
   nlohmann::json thin = nlohmann::json::parse(good);
   thin["stems"][0]["startRadius"] = 0.0;

@@ -256,12 +256,22 @@ Skeleton readSkeletonJson(const std::string& text, const std::string& file) {
     }
     stem.key = std::stoull(key, nullptr, 16);
     stem.level = static_cast<std::int16_t>(whole(st, "level", at, 0, 1000, "0 to 1000"));
-    stem.parentStem = static_cast<std::int32_t>(whole(st, "parent", at, -1, stemCount - 1, "-1 or a stem's id"));
-    stem.cloneOf = static_cast<std::int32_t>(whole(st, "cloneOf", at, -1, stemCount - 1, "-1 or a stem's id"));
-    if (stem.parentStem == static_cast<std::int32_t>(i) || stem.cloneOf == static_cast<std::int32_t>(i)) {
-      throw InputError(file, at + (stem.cloneOf == static_cast<std::int32_t>(i) ? "cloneOf" : "parent"), "a stem cannot grow from itself");
-    }
+    // Stems that come first, as nodes do: a stem's parents then lead to a trunk (a parent cycle hung the mesher).
+    stem.parentStem = static_cast<std::int32_t>(whole(st, "parent", at, -1, id - 1, "-1 or the id of an earlier stem (stems come after what they grow from)"));
+    stem.cloneOf = static_cast<std::int32_t>(whole(st, "cloneOf", at, -1, id - 1, "-1 or the id of an earlier stem (stems come after what they grow from)"));
     stem.attachNode = static_cast<std::int32_t>(whole(st, "attachNode", at, -1, nodeCount - 1, "-1 or a node's id"));
+    // A child leaves a node of its parent, a clone one of the stem it splits from, a trunk the root (or no node).
+    if (stem.attachNode >= 0) {
+      const std::int32_t from = stem.cloneOf >= 0 ? stem.cloneOf : stem.parentStem;
+      const std::int32_t owner = s.nodes[static_cast<std::size_t>(stem.attachNode)].stem;
+      if (owner != from) {
+        throw InputError(file, at + "attachNode",
+                         "node " + std::to_string(stem.attachNode) + " is " + (owner < 0 ? "on no stem" : "on stem " + std::to_string(owner)) + "; " +
+                             (stem.cloneOf >= 0   ? "a clone leaves a node of the stem it splits from (" + std::to_string(from) + ")"
+                              : from >= 0         ? "a child leaves a node of its parent (" + std::to_string(from) + ")"
+                                                  : std::string("a trunk leaves the root, a node on no stem, or -1")));
+      }
+    }
     stem.firstNode = static_cast<std::int32_t>(whole(st, "firstNode", at, 0, nodeCount, "a node's id"));
     stem.nodeCount = static_cast<std::int32_t>(whole(st, "nodeCount", at, 0, std::min(kMaxCount, nodeCount - stem.firstNode),
                                                      "0 to the number of nodes from firstNode on"));
