@@ -842,9 +842,19 @@ TEST_CASE("bad skeleton files are refused naming the file and field", "[graph][j
   REQUIRE(elsewhere["nodes"][0]["stem"] == 0);
   CHECK_THAT(read(elsewhere.dump()), Catch::Contains("stems[" + std::to_string(elsewhere["stems"].size() - 1) + "].attachNode") &&
                                          Catch::Contains("node 0 is on stem 0; a child leaves a node of its parent"));
+  // Radii that break da Vinci's rule (a fuzzed trunk swelled to 1 m between two nodes of 2 cm: NaN vertices), and a
+  // stem whose start is not its first node's.
+  nlohmann::json swollen = nlohmann::json::parse(good);
+  const int second = swollen["stems"][0]["firstNode"].get<int>() + 1;
+  swollen["nodes"][second]["startRadius"] = 50.0 * swollen["nodes"][second]["startRadius"].get<double>();
+  CHECK_THAT(read(swollen.dump()), Catch::Contains("nodes[" + std::to_string(second) + "].startRadius") && Catch::Contains("da Vinci's rule"));
+  nlohmann::json unlike = nlohmann::json::parse(good);
+  unlike["stems"][1]["startRadius"] = 2.0 * unlike["stems"][1]["startRadius"].get<double>();
+  CHECK_THAT(read(unlike.dump()), Catch::Contains("stems[1].startRadius") && Catch::Contains("give the same radius"));
   // A meshed stem of no width: its cross sections collapse into a point.
   nlohmann::json thin = nlohmann::json::parse(good);
-  thin["stems"][0]["startRadius"] = 0.0;
+  for (auto& node : thin["nodes"]) node["radius"] = node["startRadius"] = 0.0;
+  for (auto& stem : thin["stems"]) stem["startRadius"] = 0.0;
   CHECK_THAT(read(thin.dump()), Catch::Contains("stems[0].startRadius") && Catch::Contains("\"stub\": true"));
   for (auto& stem : thin["stems"]) stem["stub"] = true;  // what grows from a stub is a stub
   CHECK(read(thin.dump()).empty());
