@@ -180,6 +180,31 @@ NodeKind kindNamed(const std::string& name, const std::string& file, const std::
 
 constexpr double kBig = 1e300;
 
+// Da Vinci's rule, which the format states and every growth model keeps: the edges leaving a node start at radii whose
+// E-th powers sum to its radius's (one edge: its radius). A fuzzed trunk swelling to 1 m between two nodes of 2 cm,
+// with a child leaving it at 1 nm, meshed into NaN vertices.
+void requireDaVinci(const Skeleton& s, const std::string& file) {
+  std::vector<double> leaving(s.nodes.size(), 0.0);
+  std::vector<std::int64_t> firstChild(s.nodes.size(), -1);
+  for (std::size_t i = 0; i < s.nodes.size(); ++i) {
+    const int parent = s.nodes[i].parent;
+    if (parent < 0) continue;
+    const double r = s.nodes[static_cast<std::size_t>(parent)].radius;
+    leaving[static_cast<std::size_t>(parent)] += r > 0.0 ? std::pow(s.nodes[i].startRadius / r, s.exponent) : s.nodes[i].startRadius;
+    if (firstChild[static_cast<std::size_t>(parent)] < 0) firstChild[static_cast<std::size_t>(parent)] = static_cast<std::int64_t>(i);
+  }
+  for (std::size_t i = 0; i < s.nodes.size(); ++i) {
+    if (firstChild[i] < 0) continue;
+    const bool kept = s.nodes[i].radius > 0.0 ? std::abs(leaving[i] - 1.0) <= kRadiusRule : leaving[i] == 0.0;
+    if (!kept) {
+      throw InputError(file, "nodes[" + std::to_string(firstChild[i]) + "].startRadius",
+                       "the edges leaving node " + std::to_string(i) + " (radius " + formatNumber(s.nodes[i].radius) +
+                           ") start at radii whose " + formatNumber(s.exponent) + "th powers sum to " + formatNumber(leaving[i]) +
+                           " times its own; they must sum to it within 0.1 % (da Vinci's rule: one edge starts at the node's radius)");
+    }
+  }
+}
+
 }  // namespace
 
 Skeleton readSkeletonJson(const std::string& text, const std::string& file) {
@@ -235,28 +260,7 @@ Skeleton readSkeletonJson(const std::string& text, const std::string& file) {
     s.nodes.push_back(node);
   }
 
-  // Da Vinci's rule, which the format states and every growth model keeps: the edges leaving a node start at radii
-  // whose E-th powers sum to its radius's (one edge: its radius). A fuzzed trunk swelling to 1 m between two nodes
-  // of 2 cm, with a child leaving it at 1 nm, meshed into NaN vertices.
-  std::vector<double> leaving(s.nodes.size(), 0.0);
-  std::vector<std::int64_t> firstChild(s.nodes.size(), -1);
-  for (std::size_t i = 0; i < s.nodes.size(); ++i) {
-    const int parent = s.nodes[i].parent;
-    if (parent < 0) continue;
-    const double r = s.nodes[static_cast<std::size_t>(parent)].radius;
-    leaving[static_cast<std::size_t>(parent)] += r > 0.0 ? std::pow(s.nodes[i].startRadius / r, s.exponent) : s.nodes[i].startRadius;
-    if (firstChild[static_cast<std::size_t>(parent)] < 0) firstChild[static_cast<std::size_t>(parent)] = static_cast<std::int64_t>(i);
-  }
-  for (std::size_t i = 0; i < s.nodes.size(); ++i) {
-    if (firstChild[i] < 0) continue;
-    const bool kept = s.nodes[i].radius > 0.0 ? std::abs(leaving[i] - 1.0) <= kRadiusRule : leaving[i] == 0.0;
-    if (!kept) {
-      throw InputError(file, "nodes[" + std::to_string(firstChild[i]) + "].startRadius",
-                       "the edges leaving node " + std::to_string(i) + " (radius " + formatNumber(s.nodes[i].radius) +
-                           ") start at radii whose " + formatNumber(s.exponent) + "th powers sum to " + formatNumber(leaving[i]) +
-                           " times its own; they must sum to it within 0.1 % (da Vinci's rule: one edge starts at the node's radius)");
-    }
-  }
+  requireDaVinci(s, file);
 
   // Points of a stem closer than this have no direction between them (a fuzzed trunk's first edge normalised to NaN).
   Vec3 low(0.0), high(0.0);
@@ -329,7 +333,7 @@ Skeleton readSkeletonJson(const std::string& text, const std::string& file) {
       if (!it->is_boolean()) throw InputError(file, at + "stub", typeName(*it) + " is not allowed; give true or false");
       stem.stub = it->get<bool>();
     }
-    // A tube of no width has no surface: its cross sections collapse into one point (a fuzzed palm's did).
+    // A tube of no width has no surface: its cross sections collapse into one point (a palm's skeleton with every radius 0 meshed into six quads on one point).
     if (!stem.stub && !(stem.startRadius > 0.0)) {
       throw InputError(file, at + "startRadius", "0 on a stem the mesh makes a tube of; give a radius > 0, or \"stub\": true to draw it as a card");
     }
