@@ -27,6 +27,7 @@ void inParallel(std::size_t count, unsigned threads, Task&& task) {
     }
   };
   std::vector<std::thread> pool;
+  pool.reserve(threads);  // before any thread starts: only a thread's own start can fail below
   try {
     for (unsigned t = 1; t < threads; ++t) pool.emplace_back(work, t);
   } catch (const std::system_error&) {

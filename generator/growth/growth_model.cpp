@@ -2,7 +2,6 @@
 
 #include <stdexcept>
 
-
 namespace arbor {
 
 TreeModel::TreeModel(std::unique_ptr<ModelParams> params) : params_(std::move(params)) {
