@@ -268,7 +268,7 @@ Skeleton readSkeletonJson(const std::string& text, const std::string& file) {
     low = i == 0 ? s.nodes[i].world.position : glm::min(low, s.nodes[i].world.position);
     high = i == 0 ? s.nodes[i].world.position : glm::max(high, s.nodes[i].world.position);
   }
-  const double size = glm::distance(low, high), apart = 1e-9 * size;
+  const double size = glm::distance(low, high), apart = kZeroLength * size;
 
   s.stems.reserve(stems.size());
   for (std::size_t i = 0; i < stems.size(); ++i) {

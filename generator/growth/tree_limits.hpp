@@ -20,6 +20,9 @@ struct TreeLimits {
 // positions still resolve 8 mm there; at 10,000 km they resolve a metre, and a twig's cross sections collapse.
 inline constexpr double kMaxCoordinate = 100000.0;
 
+// Consecutive points of a stem or graph closer than this fraction of the tree's size have no direction between them.
+inline constexpr double kZeroLength = 1e-9;
+
 // Why a coordinate (metres, on one axis) is out of the mesh's reach: past kMaxCoordinate or not finite; "" if within.
 std::string outOfReach(double coordinate);
 

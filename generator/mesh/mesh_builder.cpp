@@ -153,16 +153,13 @@ class Builder {
     children_.assign(sk_.stems.size(), {});
     faked_.assign(sk_.stems.size(), false);
     cornerTurns_.assign(sk_.stems.size(), kNoCornerTurns);
+    resolution_ = 1e-5 * sk_.treeScale;
     for (std::size_t i = 0; i < sk_.stems.size(); ++i) {
       const SkeletonStem& st = sk_.stems[i];
       if (!meshed(static_cast<int>(i))) continue;
       if (st.cloneOf >= 0) clones_[static_cast<std::size_t>(st.cloneOf)].push_back(static_cast<int>(i));
       else if (st.parentStem >= 0) children_[static_cast<std::size_t>(st.parentStem)].push_back(static_cast<int>(i));
-    }
-    resolution_ = 1e-5 * sk_.treeScale;
-    for (std::size_t i = 0; i < sk_.stems.size(); ++i) {
-      const double r = sk_.stems[i].startRadius;
-      if (meshed(static_cast<int>(i)) && r > 0.0) resolution_ = std::min(resolution_, r);
+      if (st.startRadius > 0.0) resolution_ = std::min(resolution_, st.startRadius);
     }
     branching_ = bearingStems();
     layJointAxes();

@@ -8,6 +8,7 @@
 
 #include "common/mix64.hpp"
 #include "common/text_util.hpp"
+#include "growth/tree_limits.hpp"
 
 namespace arbor {
 
@@ -15,8 +16,6 @@ namespace {
 
 // Relative tolerance within which two pipe-model weights count as equal (sums in different orders differ).
 constexpr double kWeightTie = 1e-9;
-// Edges shorter than this fraction of the tree's size are refused as zero-length.
-constexpr double kZeroLength = 1e-9;
 
 std::string idText(const BranchGraph& g, std::size_t i) {
   const std::int64_t id = g.nodes[i].id >= 0 ? g.nodes[i].id : static_cast<std::int64_t>(i);
