@@ -19,7 +19,9 @@ layout(location = 1) out vec3 worldNormal;
 layout(location = 2) out vec3 uvw;
 layout(location = 3) out float radius;
 
-// Test hook: the evaluated points before and after displacement, with their patch and (u, v).
+// Test hook: the evaluated points before and after displacement, with their patch and (u, v); compiled in only
+// in the capture variant (interface.h).
+layout(constant_id = ARBOR_SPEC_CAPTURE) const bool kCapture = false;
 layout(set = 0, binding = ARBOR_BINDING_CAPTURE, std430) buffer Capture {
   uint count;
   uint capacity;
@@ -43,9 +45,9 @@ void main() {
   vec3 onPatch = surface.position, p = surface.position, n = surface.normal;
   uvw = surface.uvw;
   radius = surface.radius;
-  if (runtime(scene.displace.x) != 0.0) p += surface.along * displacement(uvw, radius, displacementLod(p, radius));
+  if (kDisplaced) p += surface.along * displacement(uvw, radius, displacementLod(p, radius));
 
-  if (runtime(scene.flags.x) != 0u) {
+  if (kCapture) {
     uint slot = atomicAdd(capture.count, 1u);
     if (slot < capture.capacity) {
       capture.entries[3u * slot] = vec4(float(patchIndex), u, v, uvw.x);

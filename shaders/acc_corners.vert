@@ -41,7 +41,7 @@ void main() {
   uvw = vec3(abs(flip) * a.x + (1.0 - abs(flip)) * cageUvw.x, a.y, flip);
   radius = point.w;
   vec3 p = point.xyz;
-  if (runtime(scene.displace.x) != 0.0) p += (limitNormals ? safeNormalize(limitNormal) : n) * displacement(uvw, radius, displacementLod(p, radius));
+  if (kDisplaced) p += (limitNormals ? safeNormalize(limitNormal) : n) * displacement(uvw, radius, displacementLod(p, radius));
   vec4 world = draw.model * vec4(p, 1.0);
   worldPosition = world.xyz;
   worldNormal = mat3(draw.model) * n;

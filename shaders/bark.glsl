@@ -1,6 +1,9 @@
 // Bark texturing with the flip coordinate (Nystad 6.3.2, 6.4.1): u is mirrored front to back, so the side
 // with w < 0 reads the texture flipped and the texture wraps once around the branch without a seam.
 
+// Whether this pipeline displaces (scene.displace.x is then not 0): set per pipeline variant (interface.h).
+layout(constant_id = ARBOR_SPEC_DISPLACED) const bool kDisplaced = false;
+
 vec2 barkCoordinates(vec3 uvw) {
   float u = uvw.z >= 0.0 ? 0.5 * uvw.x : 1.0 - 0.5 * uvw.x;
   return vec2(u, uvw.y * scene.displace.w);
@@ -52,9 +55,8 @@ float heightAt(vec2 tc, float lod) {
   return mix(bilinearHeight(tc, l0), bilinearHeight(tc, l1), l - float(l0));
 }
 
-// Displacement along the normal (5.5.1): (d - b) r s, faded at seams.
+// Displacement along the normal (5.5.1): (d - b) r s, faded at seams. Called only where kDisplaced.
 float displacement(vec3 uvw, float radius, float lod) {
-  if (runtime(scene.displace.x) == 0.0) return 0.0;
   float d = heightAt(barkCoordinates(uvw), lod);
   return (d - scene.displace.y) * radius * scene.displace.x * seamFade(uvw.z);
 }

@@ -30,7 +30,7 @@ void main() {
   vec4 a = cornerUvwRadius[0] * w + cornerUvwRadius[1] * u + cornerUvwRadius[2] * v;
   uvw = a.xyz;
   radius = a.w;
-  if (runtime(scene.displace.x) != 0.0) p += n * displacement(uvw, radius, displacementLod(p, radius));
+  if (kDisplaced) p += n * displacement(uvw, radius, displacementLod(p, radius));
   vec4 world = draw.model * vec4(p, 1.0);
   worldPosition = world.xyz;
   worldNormal = mat3(draw.model) * n;

@@ -20,7 +20,7 @@ void main() {
   vec3 n = normalize(control[base + 10u + corner].xyz);
   uvw = control[base + 16u + corner].xyz;
   radius = point.w;
-  if (runtime(scene.displace.x) != 0.0) p += n * displacement(uvw, radius, displacementLod(p, radius));
+  if (kDisplaced) p += n * displacement(uvw, radius, displacementLod(p, radius));
   vec4 world = draw.model * vec4(p, 1.0);
   worldPosition = world.xyz;
   worldNormal = mat3(draw.model) * n;

@@ -14,7 +14,7 @@ layout(set = 0, binding = ARBOR_BINDING_SCENE, std140) uniform Scene {
   vec4 skyTop;
   vec4 skyHorizon;
   vec4 ground;        // rgb, distance from the eye at which it has faded into the horizon (metres)
-  uvec4 flags;        // x: capture evaluated points, y: wireframe colouring, z: back faces in magenta
+  uvec4 flags;        // x: unused (capture is a pipeline variant), y: wireframe colouring, z: back faces in magenta
   vec4 lens;          // x: pixels covered by one unit of length at unit distance
   vec4 leafLod;       // distance (m) up to which all leaves show (0: no thinning), density, unused, shadow leaves
   vec4 wind;          // unit direction xy (z up), strength (0: still), gust frequency (Hz)

@@ -1,6 +1,7 @@
 #include "pipelines.hpp"
 
 #include <array>
+#include <stdexcept>
 #include <vector>
 
 #include "spirv_draw_commands_comp.h"
@@ -48,6 +49,7 @@ struct PipelineSpec {
   bool depthWrite = true;
   bool wireframe = false;
   bool cullBack = true;
+  std::array<VkBool32, 2> specialization{};  // ARBOR_SPEC_DISPLACED, ARBOR_SPEC_CAPTURE, for every stage
 };
 
 VkShaderModule module(VkDevice device, const Stage& s) {
@@ -61,6 +63,11 @@ VkShaderModule module(VkDevice device, const Stage& s) {
 
 VkPipeline build(VkDevice device, VkRenderPass renderPass, VkPipelineLayout layout, VkSampleCountFlagBits samples,
                  const PipelineSpec& spec) {
+  // A stage that declares neither constant ignores them.
+  const std::array<VkSpecializationMapEntry, 2> entries{{{ARBOR_SPEC_DISPLACED, 0, sizeof(VkBool32)},
+                                                         {ARBOR_SPEC_CAPTURE, sizeof(VkBool32), sizeof(VkBool32)}}};
+  const VkSpecializationInfo specialization{static_cast<std::uint32_t>(entries.size()), entries.data(), sizeof spec.specialization,
+                                            spec.specialization.data()};
   std::vector<VkShaderModule> modules;
   std::vector<VkPipelineShaderStageCreateInfo> stages;
   for (const Stage& s : spec.stages) {
@@ -69,6 +76,7 @@ VkPipeline build(VkDevice device, VkRenderPass renderPass, VkPipelineLayout layo
     info.stage = s.stage;
     info.module = modules.back();
     info.pName = "main";
+    info.pSpecializationInfo = &specialization;
     stages.push_back(info);
   }
   // The tree vertex: position + radius, normal + level, uvw (three vec4, 48 bytes).
@@ -190,13 +198,63 @@ void createComputeLayouts(VkDevice device, Pipelines& p) {
                 {VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(PassConstants)}, p.computeSetLayout, p.computeLayout);
 }
 
+// A surface pipeline filled, two-sided and (where asked and the device can) as wireframe.
+SurfacePipelines buildSurface(const Pipelines& p, const PipelineSpec& spec, bool wireframe) {
+  SurfacePipelines s;
+  s.fill = build(p.device, p.renderPass, p.layout, p.samples, spec);
+  PipelineSpec twoSided = spec;
+  twoSided.cullBack = false;
+  s.twoSided = build(p.device, p.renderPass, p.layout, p.samples, twoSided);
+  if (wireframe && p.wireframes) {
+    PipelineSpec wire = spec;
+    wire.wireframe = true;
+    wire.cullBack = false;
+    s.wireframe = build(p.device, p.renderPass, p.layout, p.samples, wire);
+  }
+  return s;
+}
+
+// The tree in `info`'s mode: its own stages (or its factor-1 vertex stage) with the bark fragment stage.
+PipelineSpec treeSpec(const RenderModeInfo& info, bool corners, bool displaced, bool capture) {
+  const Stage fragment = stage(VK_SHADER_STAGE_FRAGMENT_BIT, spirv_tree_frag);
+  PipelineSpec spec{{stage(VK_SHADER_STAGE_VERTEX_BIT, corners ? info.corners : info.vertex), fragment}};
+  spec.specialization = {displaced ? VK_TRUE : VK_FALSE, capture ? VK_TRUE : VK_FALSE};
+  if (info.primitive == PatchPrimitive::None) {
+    spec.treeVertices = true;
+  } else if (!corners) {
+    spec.stages.insert(spec.stages.begin() + 1, {stage(VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, info.control),
+                                                 stage(VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, info.evaluation)});
+    spec.patchPoints = 1;  // the patch's entry in this frame's list; its points come from the control buffer
+  }
+  return spec;
+}
+
 }  // namespace
 
-void Pipelines::destroy(VkDevice device) {
+const SurfacePipelines& Pipelines::surface(RenderMode mode, std::size_t variant) {
+  const RenderModeInfo& info = renderModeInfo(mode);
+  const bool displaced = info.primitive != PatchPrimitive::None && (variant & 1u) != 0;
+  const bool capture = info.captures && (variant & 2u) != 0;
+  SurfacePipelines& s = modes[static_cast<std::size_t>(mode)].surface[pipelineVariant(displaced, capture)];
+  if (!s.fill) s = buildSurface(*this, treeSpec(info, false, displaced, capture), !capture);
+  return s;
+}
+
+const SurfacePipelines& Pipelines::corners(RenderMode mode, bool displaced) {
+  const RenderModeInfo& info = renderModeInfo(mode);
+  if (info.primitive == PatchPrimitive::None) throw std::logic_error("the flat mode draws no patches at factor 1");
+  SurfacePipelines& s = modes[static_cast<std::size_t>(mode)].corners[displaced ? 1 : 0];
+  if (!s.fill) s = buildSurface(*this, treeSpec(info, true, displaced, false), true);
+  return s;
+}
+
+void Pipelines::destroy() {
   std::vector<VkPipeline> all{sky, ground, leaves, impostors, ceiling, lines, cull, drawCommands, wind};
   for (const ModePipelines& m : modes) {
-    all.insert(all.end(), {m.surface.fill, m.surface.wireframe, m.surface.twoSided, m.corners.fill, m.corners.wireframe,
-                           m.corners.twoSided, m.build});
+    all.push_back(m.build);
+    auto add = [&](const SurfacePipelines& s) { all.insert(all.end(), {s.fill, s.wireframe, s.twoSided}); };
+    for (const SurfacePipelines& s : m.surface) add(s);
+    for (const SurfacePipelines& s : m.corners) add(s);
   }
   for (VkPipeline p : all) {
     if (p) vkDestroyPipeline(device, p, nullptr);
@@ -213,6 +271,10 @@ void Pipelines::destroy(VkDevice device) {
 Pipelines createPipelines(const vk::VulkanContext& context, VkRenderPass renderPass, VkSampleCountFlagBits samples) {
   const VkDevice device = context.device();
   Pipelines p;
+  p.device = device;
+  p.renderPass = renderPass;
+  p.samples = samples;
+  p.wireframes = context.features().fillModeNonSolid;
   const VkShaderStageFlags all = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT |
                                  VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
   p.pushStages = all;
@@ -243,7 +305,6 @@ Pipelines createPipelines(const vk::VulkanContext& context, VkRenderPass renderP
   ground.cullBack = false;
   p.ground = build(device, renderPass, p.layout, samples, ground);
 
-  const auto treeFrag = stage(VK_SHADER_STAGE_FRAGMENT_BIT, spirv_tree_frag);
   PipelineSpec ceiling{{stage(VK_SHADER_STAGE_VERTEX_BIT, spirv_patch_vert), stage(VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, spirv_ceiling_tesc),
                         stage(VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, spirv_ceiling_tese),
                         stage(VK_SHADER_STAGE_FRAGMENT_BIT, spirv_ceiling_frag)}};
@@ -258,33 +319,9 @@ Pipelines createPipelines(const vk::VulkanContext& context, VkRenderPass renderP
   p.cull = buildCompute(device, p.computeLayout, stage(VK_SHADER_STAGE_COMPUTE_BIT, spirv_patch_cull_comp));
   p.drawCommands = buildCompute(device, p.computeLayout, stage(VK_SHADER_STAGE_COMPUTE_BIT, spirv_draw_commands_comp));
   p.wind = buildCompute(device, p.computeLayout, stage(VK_SHADER_STAGE_COMPUTE_BIT, spirv_wind_comp));
-  auto surface = [&](const PipelineSpec& spec) {
-    SurfacePipelines s;
-    s.fill = build(device, renderPass, p.layout, samples, spec);
-    PipelineSpec twoSided = spec;
-    twoSided.cullBack = false;
-    s.twoSided = build(device, renderPass, p.layout, samples, twoSided);
-    if (context.features().fillModeNonSolid) {
-      PipelineSpec wire = spec;
-      wire.wireframe = true;
-      wire.cullBack = false;
-      s.wireframe = build(device, renderPass, p.layout, samples, wire);
-    }
-    return s;
-  };
   for (const RenderModeInfo& info : renderModes()) {
-    ModePipelines& m = p.modes[static_cast<std::size_t>(info.mode)];
-    PipelineSpec spec{{stage(VK_SHADER_STAGE_VERTEX_BIT, info.vertex), treeFrag}};
-    if (info.primitive == PatchPrimitive::None) {
-      spec.treeVertices = true;
-    } else {
-      spec.stages.insert(spec.stages.begin() + 1, {stage(VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, info.control),
-                                                   stage(VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, info.evaluation)});
-      spec.patchPoints = 1;  // the patch's entry in this frame's list; its points come from the control buffer
-      m.build = buildCompute(device, p.computeLayout, stage(VK_SHADER_STAGE_COMPUTE_BIT, info.build));
-      m.corners = surface(PipelineSpec{{stage(VK_SHADER_STAGE_VERTEX_BIT, info.corners), treeFrag}});
-    }
-    m.surface = surface(spec);
+    if (info.primitive == PatchPrimitive::None) continue;
+    p.modes[static_cast<std::size_t>(info.mode)].build = buildCompute(device, p.computeLayout, stage(VK_SHADER_STAGE_COMPUTE_BIT, info.build));
   }
   // Cards (cards.hpp): indexed triangles whose vertex stage reads its leaf or segment by gl_VertexIndex.
   PipelineSpec leaves{{stage(VK_SHADER_STAGE_VERTEX_BIT, spirv_leaf_vert), stage(VK_SHADER_STAGE_FRAGMENT_BIT, spirv_leaf_frag)}};

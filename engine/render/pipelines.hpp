@@ -17,11 +17,17 @@ struct SurfacePipelines {
   VkPipeline twoSided = VK_NULL_HANDLE;   // no culling: back faces seen through cracks show (crack tests)
 };
 
+// A tessellated mode's pipeline variants (interface.h's specialization constants): lavapipe runs both sides of
+// every branch, so displacement and the test capture are compiled into their own variants instead.
+constexpr std::size_t kPipelineVariants = 4;
+constexpr std::size_t pipelineVariant(bool displaced, bool capture) { return (displaced ? 1u : 0u) + (capture ? 2u : 0u); }
+
 // One render mode's pipelines.
 struct ModePipelines {
-  SurfacePipelines surface;
-  SurfacePipelines corners;           // tessellated modes: patches at factor 1 without the tessellator
-  VkPipeline build = VK_NULL_HANDLE;  // compute: control points once per mesh (tessellated modes)
+  // By pipelineVariant, each built on first use (Pipelines::surface); the flat mode has variant 0 only.
+  std::array<SurfacePipelines, kPipelineVariants> surface;
+  std::array<SurfacePipelines, 2> corners;  // tessellated modes: patches at factor 1 without the tessellator, by displaced
+  VkPipeline build = VK_NULL_HANDLE;        // compute: control points once per mesh (tessellated modes)
 };
 
 struct Pipelines {
@@ -38,7 +44,18 @@ struct Pipelines {
   VkPipeline lines = VK_NULL_HANDLE;      // unlit coloured line lists (the modeller's wireframes)
   VkShaderStageFlags pushStages = 0;   // every stage the layout's push constants and bindings reach
 
-  void destroy(VkDevice device);
+  // A mode's surface or factor-1 pipelines in a variant (pipelineVariant), built the first time one is asked for:
+  // most sessions never displace or capture. Capture variants have no wireframe; a mode that cannot capture
+  // (RenderModeInfo::captures) gives its variant without capture.
+  const SurfacePipelines& surface(RenderMode mode, std::size_t variant);
+  const SurfacePipelines& corners(RenderMode mode, bool displaced);
+  void destroy();
+
+  // What building a variant later (and destroy) needs.
+  VkDevice device = VK_NULL_HANDLE;
+  VkRenderPass renderPass = VK_NULL_HANDLE;
+  VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
+  bool wireframes = false;  // the device has fillModeNonSolid
 };
 
 // Push constants of the graphics pipelines: the tree's model matrix and leaf count (scene.glsl's Draw).

@@ -25,13 +25,13 @@ constexpr SpirvCode code(const std::uint32_t (&words)[N]) {
 
 const std::array<RenderModeInfo, kRenderModeCount>& renderModes() {
   static const std::array<RenderModeInfo, kRenderModeCount> modes{{
-      {RenderMode::Flat, "flat", "the quad mesh as triangles, no tessellation", PatchPrimitive::None, 0, code(spirv_flat_vert), {}, {}, {}, {}, 0},
+      {RenderMode::Flat, "flat", "the quad mesh as triangles, no tessellation", PatchPrimitive::None, 0, code(spirv_flat_vert), {}, {}, {}, {}, 0, false},
       {RenderMode::PN, "pn", "PN-triangles: a cubic triangle per mesh triangle (Vlachos et al. 2001)", PatchPrimitive::Triangle,
        ARBOR_PN_CONTROL_VEC4S, code(spirv_patch_vert), code(spirv_pn_tesc), code(spirv_pn_tese), code(spirv_pn_control_comp),
-       code(spirv_pn_corners_vert), 3},
+       code(spirv_pn_corners_vert), 3, false},
       {RenderMode::ACC, "acc", "approximate Catmull-Clark: a bicubic patch per quad (Loop & Schaefer 2008)", PatchPrimitive::Quad,
        ARBOR_ACC_CONTROL_VEC4S, code(spirv_patch_vert), code(spirv_acc_tesc), code(spirv_acc_tese), code(spirv_acc_control_comp),
-       code(spirv_acc_corners_vert), 6},
+       code(spirv_acc_corners_vert), 6, true},
   }};
   return modes;
 }

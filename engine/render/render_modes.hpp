@@ -30,6 +30,7 @@ struct RenderModeInfo {
   SpirvCode build;           // compute: control points once per mesh (tessellated modes)
   SpirvCode corners;         // vertex: patches whose factors are all 1, drawn without the tessellator
   std::uint32_t cornerVertices;  // vertices per such patch (two triangles for a quad)
+  bool captures;             // the evaluation stage can write the points it evaluates (tests; ARBOR_SPEC_CAPTURE)
 };
 
 constexpr std::size_t kRenderModeCount = 3;

@@ -128,7 +128,7 @@ TreeRenderer::~TreeRenderer() {
   vkDestroyDescriptorPool(device, computePool_, nullptr);
   vkDestroySampler(device, sampler_, nullptr);
   vkDestroySampler(device, leafSampler_, nullptr);
-  pipelines_.destroy(device);
+  pipelines_.destroy();
 }
 
 void TreeRenderer::setCapture(std::uint32_t capacity) {
@@ -420,7 +420,7 @@ void TreeRenderer::beginFrame(VkCommandBuffer cmd, const Camera& camera, VkExten
                              : !trees_.empty() ? std::clamp(10.0f * glm::length(trees_[0]->bounds.hi - trees_[0]->bounds.lo), 60.0f, 400.0f)
                                                : 100.0f;
   u.ground = glm::vec4(0.30f, 0.36f, 0.20f, groundRadius);
-  u.flags = glm::uvec4(captureCapacity_ > 0 ? 1u : 0u, 0u, s.revealBackFaces ? 1u : 0u, 0u);
+  u.flags = glm::uvec4(0u, 0u, s.revealBackFaces ? 1u : 0u, 0u);
   u.leafLod = glm::vec4(s.leafLodDistance, std::clamp(s.leafDensity, 0.0f, 1.0f),
                         0.0f, static_cast<float>(s.shadowLeaves));
   u.lens = glm::vec4(0.5f * static_cast<float>(extent.height) / std::tan(0.5f * camera.fovY), 0.0f, 0.0f, 0.0f);
@@ -630,10 +630,10 @@ void TreeRenderer::draw(VkCommandBuffer cmd, VkExtent2D extent, const RenderSett
   auto drawMesh = [&](std::size_t i, const GpuTree& tree, bool wire) {
     const int planIndex = frame.planOf[i];
     const RenderMode drawn = planIndex >= 0 ? s.mode : RenderMode::Flat;
-    const ModePipelines& mode = pipelines_.modes[static_cast<std::size_t>(drawn)];
+    const bool displaced = s.displacement != 0.0f;
     auto pick = [&](const SurfacePipelines& p) { return wire ? p.wireframe : s.revealBackFaces ? p.twoSided : p.fill; };
     if (planIndex < 0) {
-      const VkPipeline pipeline = pick(mode.surface);
+      const VkPipeline pipeline = pick(pipelines_.surface(RenderMode::Flat, 0));
       if (!pipeline) return;
       vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
       const VkDeviceSize offset = 0;
@@ -661,9 +661,9 @@ void TreeRenderer::draw(VkCommandBuffer cmd, VkExtent2D extent, const RenderSett
         }
       }
     };
-    if (!s.ceiling) drawIndirect(pick(mode.corners), plan.commandBase, plan.counterBase + ARBOR_BUCKETS, 1);
-    drawIndirect(s.ceiling && !wire ? pipelines_.ceiling : pick(mode.surface), plan.commandBase + 1, plan.counterBase + ARBOR_BUCKETS + 1,
-                 plan.maxCommands);
+    if (!s.ceiling) drawIndirect(pick(pipelines_.corners(drawn, displaced)), plan.commandBase, plan.counterBase + ARBOR_BUCKETS, 1);
+    drawIndirect(s.ceiling && !wire ? pipelines_.ceiling : pick(pipelines_.surface(drawn, pipelineVariant(displaced, captureCapacity_ > 0))),
+                 plan.commandBase + 1, plan.counterBase + ARBOR_BUCKETS + 1, plan.maxCommands);
   };
   // `count` cards from `first`: gl_VertexIndex / 4 counts from `first` (the vertex offset), one draw per kCardsPerDraw.
   auto drawCards = [&](VkPipeline pipeline, std::uint32_t count, std::uint32_t first = 0) {
