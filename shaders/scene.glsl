@@ -24,8 +24,8 @@ struct Impostor {
 };
 // Fake branches: the skeleton edges of the stems the mesh leaves out.
 layout(set = 0, binding = ARBOR_BINDING_IMPOSTORS, std430) readonly buffer Impostors { Impostor impostors[]; };
-layout(set = 0, binding = ARBOR_BINDING_BARK_COLOR) uniform sampler2D barkColor;
-layout(set = 0, binding = ARBOR_BINDING_BARK_HEIGHT) uniform sampler2D barkHeight;
+layout(set = 0, binding = ARBOR_BINDING_BARK_COLOR) uniform sampler2D barkColor;    // alpha: the height (fragment stages)
+layout(set = 0, binding = ARBOR_BINDING_BARK_HEIGHT) uniform sampler2D barkHeight;  // displacement (vertex and evaluation stages)
 
 // Wind records (interface.h): per mesh vertex, then per leaf from draw.leafWindBase, per fake-branch end from
 // draw.impostorWindBase.

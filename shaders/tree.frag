@@ -25,12 +25,13 @@ void main() {
   float sdx = dFdx(shifted), sdy = dFdy(shifted);
   if (abs(sdx) < abs(dx.x)) dx.x = sdx;
   if (abs(sdy) < abs(dy.x)) dy.x = sdy;
-  vec3 albedo = textureGrad(barkColor, tc, dx, dy).rgb;
+  vec4 bark = textureGrad(barkColor, tc, dx, dy);  // colour, and the height in alpha: one lookup (renderer.cpp)
+  vec3 albedo = bark.rgb;
 
   vec3 n = dot(worldNormal, worldNormal) > 1e-30 ? normalize(worldNormal) : vec3(0.0, 0.0, 1.0);
   if (!gl_FrontFacing) n = -n;
   // Bump mapping from the height texture through screen-space derivatives (no tangent frame needed).
-  float h = textureGrad(barkHeight, tc, dx, dy).r;
+  float h = bark.a;
   vec3 dpdx = dFdx(worldPosition), dpdy = dFdy(worldPosition);
   vec3 r1 = cross(dpdy, n), r2 = cross(n, dpdx);
   float det = dot(dpdx, r1);
