@@ -13,13 +13,7 @@ layout(location = 0) out vec3 bezierPosition[];
 layout(location = 1) out vec4 bezierUvwRadius[];       // u, v, w and radius follow the same construction
 layout(location = 2) patch out vec3 cornerNormal[4];   // exact Catmull-Clark limit normals at the corners
 layout(location = 6) patch out vec3 cornerUvw[4];      // corner texture coordinates, for the seam-safe mix
-layout(location = 10) patch out vec3 cornerCorrection[4];  // limit normal less the patch's geometry normal there
-layout(location = 14) patch out uint patchIndex;
-
-// Per corner, the points (a - b) x (c - d) of the patch's geometry normal there (acc_evaluate.glsl).
-const uvec4 kGeometryNormal[4] = uvec4[4](uvec4(1u, 0u, 4u, 0u), uvec4(3u, 2u, 7u, 3u), uvec4(15u, 14u, 15u, 11u), uvec4(13u, 12u, 12u, 8u));
-
-vec3 safeNormalize(vec3 v) { return dot(v, v) > 1e-30 ? normalize(v) : vec3(0.0); }
+layout(location = 10) patch out uint patchIndex;
 
 void main() {
   uint id = uint(gl_InvocationID);  // per-vertex outputs may only be written at [gl_InvocationID]
@@ -28,14 +22,8 @@ void main() {
   bezierPosition[gl_InvocationID] = point.xyz;
   bezierUvwRadius[gl_InvocationID] = vec4(control[base + 16u + id].xyz, point.w);
   if (id < 4u) {
-    vec3 limit = control[base + 32u + id].xyz;
-    cornerNormal[id] = limit;
+    cornerNormal[id] = control[base + 32u + id].xyz;
     cornerUvw[id] = control[base + 36u + id].xyz;
-    // Once per patch what evaluateAcc would otherwise work out at every tessellated vertex; zero for a fallback
-    // patch, which has no limit normals.
-    uvec4 k = kGeometryNormal[id];
-    vec3 geometry = safeNormalize(cross(control[base + k.x].xyz - control[base + k.y].xyz, control[base + k.z].xyz - control[base + k.w].xyz));
-    cornerCorrection[id] = any(notEqual(control[base + 32u].xyz, vec3(0.0))) ? limit - geometry : vec3(0.0);
   }
   if (id == 0u) {
     patchIndex = entry[0].x;

@@ -12,8 +12,7 @@ layout(location = 0) in vec3 bezierPosition[];
 layout(location = 1) in vec4 bezierUvwRadius[];
 layout(location = 2) patch in vec3 cornerNormal[4];
 layout(location = 6) patch in vec3 cornerUvw[4];
-layout(location = 10) patch in vec3 cornerCorrection[4];
-layout(location = 14) patch in uint patchIndex;
+layout(location = 10) patch in uint patchIndex;
 
 layout(location = 0) out vec3 worldPosition;
 layout(location = 1) out vec3 worldNormal;
@@ -41,9 +40,8 @@ void main() {
     attributes[i] = bezierUvwRadius[i];
   }
   vec3 normals[4] = vec3[4](cornerNormal[0], cornerNormal[1], cornerNormal[2], cornerNormal[3]);
-  vec3 corrections[4] = vec3[4](cornerCorrection[0], cornerCorrection[1], cornerCorrection[2], cornerCorrection[3]);
   vec3 uvws[4] = vec3[4](cornerUvw[0], cornerUvw[1], cornerUvw[2], cornerUvw[3]);
-  AccPoint surface = evaluateAcc(point, attributes, normals, corrections, uvws, u, v);
+  AccPoint surface = evaluateAcc(point, attributes, normals, uvws, u, v);
   vec3 onPatch = surface.position, p = surface.position, n = surface.normal;
   uvw = surface.uvw;
   radius = surface.radius;

@@ -19,10 +19,8 @@ void bernstein(float t, out vec4 b, out vec4 d) {
 }
 
 // `point` [row * 4 + column] with u along the columns (corner 0 -> 1) and v along the rows (corner 0 -> 3);
-// `attributes`: their u, v, w and radius. Corner normals are zero for a fallback patch, and so are the
-// corrections: each corner's limit normal less the geometry normal there (acc.tesc works them out per patch).
-AccPoint evaluateAcc(vec3 point[16], vec4 attributes[16], vec3 cornerNormal[4], vec3 cornerCorrection[4], vec3 cornerUvw[4], float u,
-                     float v) {
+// `attributes`: their u, v, w and radius. Corner normals are zero for a fallback patch.
+AccPoint evaluateAcc(vec3 point[16], vec4 attributes[16], vec3 cornerNormal[4], vec3 cornerUvw[4], float u, float v) {
   vec4 bu, du, bv, dv;
   bernstein(u, bu, du);
   bernstein(v, bv, dv);
@@ -44,8 +42,14 @@ AccPoint evaluateAcc(vec3 point[16], vec4 attributes[16], vec3 cornerNormal[4], 
   AccPoint result;
   vec3 n = safeNormalize(cross(pu, pv));
   float w[4] = float[4](bu.x * bv.x, bu.w * bv.x, bu.w * bv.w, bu.x * bv.w);
-  for (int i = 0; i < 4; ++i) n += w[i] * cornerCorrection[i];
   bool limitNormals = any(notEqual(cornerNormal[0], vec3(0.0)));  // fallback patches have none
+  if (limitNormals) {
+    vec3 geometryAt[4] = vec3[4](safeNormalize(cross(point[1] - point[0], point[4] - point[0])),
+                                 safeNormalize(cross(point[3] - point[2], point[7] - point[3])),
+                                 safeNormalize(cross(point[15] - point[14], point[15] - point[11])),
+                                 safeNormalize(cross(point[13] - point[12], point[12] - point[8])));
+    for (int i = 0; i < 4; ++i) n += w[i] * (cornerNormal[i] - geometryAt[i]);
+  }
   result.normal = safeNormalize(n);
   result.position = p;
 
