@@ -84,6 +84,15 @@ TEST_CASE("golden images: every mode on three presets", "[render][golden]") {
   }
 }
 
+TEST_CASE("bark colour and height textures of different sizes are refused before anything is created", "[render]") {
+  render::TreeTextures textures = test::textures();
+  textures.barkHeight = Image{2, 2, std::vector<std::uint8_t>(16, 128)};  // the colour texture is larger
+  const std::uint32_t errorsBefore = test::vulkan().validationErrors();
+  REQUIRE_THROWS_WITH(render::RenderSession(test::vulkan(), 32, 32, VK_SAMPLE_COUNT_1_BIT, textures),
+                      Catch::Contains("the bark height texture is 2x2") && Catch::Contains("must be the same size"));
+  CHECK(test::vulkan().validationErrors() == errorsBefore);
+}
+
 TEST_CASE("tessellation generates exactly the triangles its factor asks for", "[render]") {
   render::FrameResult frame;
   const TreeMesh tree = test::meshOf("black-tupelo", 1, 1);

@@ -76,11 +76,12 @@ Image colorWithHeight(const Image& color, const Image& height) {
 TreeRenderer::TreeRenderer(const vk::VulkanContext& context, VkRenderPass renderPass, VkSampleCountFlagBits samples,
                            const TreeTextures& textures)
     : context_(context) {
+  const Image bark = colorWithHeight(textures.barkColor, textures.barkHeight);  // first: it may throw, with nothing created yet
   pipelines_ = createPipelines(context, renderPass, samples);
   const auto upload = [&context](const Image& image, bool srgb) {
     return vk::uploadTexture(context, image.rgba, static_cast<std::uint32_t>(image.width), static_cast<std::uint32_t>(image.height), srgb);
   };
-  barkColor_ = upload(colorWithHeight(textures.barkColor, textures.barkHeight), true);
+  barkColor_ = upload(bark, true);
   barkHeight_ = upload(textures.barkHeight, false);
   leafAtlas_ = upload(textures.leafAtlas, true);
   sampler_ = vk::createRepeatSampler(context, static_cast<float>(barkColor_.mipLevels()), textures.barkAnisotropy);
