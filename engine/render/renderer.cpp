@@ -59,7 +59,7 @@ std::uint32_t verticesPerPatch(RenderMode mode, float level) {
 }
 
 // The bark colour with the height in its alpha (unused before), so the bark fragment stage reads both in one
-// filtered lookup: on lavapipe the second lookup cost ACC at factor 16 a third of its frame (docs/rendering.md).
+// filtered lookup instead of two (the same picture, bit for bit).
 Image colorWithHeight(const Image& color, const Image& height) {
   if (color.width != height.width || color.height != height.height) {
     throw std::invalid_argument("the bark height texture is " + std::to_string(height.width) + "x" + std::to_string(height.height) +
