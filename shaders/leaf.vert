@@ -27,15 +27,17 @@ void main() {
   vec3 base = (draw.model * vec4(restBase, 1.0)).xyz;
   float eyeDistance = length(base - scene.cameraPos.xyz);
   // Fraction of the leaves kept at this distance: all up to leafLod.x metres, then falling with the square of
-  // the distance (as the crown's area on screen); the last tenth of the kept ones shrink away.
-  float kept = scene.leafLod.y;
-  if (scene.leafLod.x > 0.0) kept *= min(1.0, pow(scene.leafLod.x / max(eyeDistance, 1e-3), 2.0));
+  // the distance (as the crown's area on screen); the last tenth of the kept ones shrink away. The kept leaves
+  // grow by the inverse square root of the share thinned away, so the crown keeps its leaf area (stochastic
+  // simplification, Cook et al. 2007), at most twice as long and wide.
+  float thinned = scene.leafLod.x > 0.0 ? min(1.0, pow(scene.leafLod.x / max(eyeDistance, 1e-3), 2.0)) : 1.0;
+  float kept = scene.leafLod.y * thinned;
   float rank = (float(i) + 0.5) / max(float(draw.leafCount), 1.0);
   if (rank > kept) {
     gl_Position = kNoCard;
     return;
   }
-  float size = scene.leafLod.x > 0.0 ? clamp((kept - rank) / (0.1 * kept), 0.0, 1.0) : 1.0;
+  float size = scene.leafLod.x > 0.0 ? clamp((kept - rank) / (0.1 * kept), 0.0, 1.0) * min(inversesqrt(thinned), 2.0) : 1.0;
 
   vec3 along = mat3(draw.model) * (leaf.directionWidth.xyz + leaf.normalKind.xyz * flutter);
   vec3 normal = normalize(mat3(draw.model) * leaf.normalKind.xyz);

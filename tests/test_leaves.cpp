@@ -1,5 +1,6 @@
 // Leaves on lavapipe: one quad per leaf, density and distance thinning, back-lighting, self-shadowing, goldens.
 #include <catch2/catch.hpp>
+#include <algorithm>
 #include <cmath>
 
 #include "growth/weber_penn/weber_penn.hpp"
@@ -61,6 +62,33 @@ TEST_CASE("distance thins the leaves gradually, the farther the fewer", "[render
     previous = drawn;
   }
   CHECK(previous < 0.5 * 2.0 * leaves);  // and far away most are gone
+}
+
+TEST_CASE("thinned leaves grow so that the crown keeps its leaf cover", "[render][leaves]") {
+  test::TreeScene scene("quaking-aspen", 3, 0, 200, 250);
+  render::Camera camera = scene.framed();
+  camera.eye = camera.target + (camera.eye - camera.target) * 0.5f;  // the crown fills the picture
+  const float distance = glm::distance(camera.eye, camera.target);
+  render::RenderSettings settings;
+  settings.mode = render::RenderMode::Flat;
+  settings.ground = false;
+  const Image bare = (scene.session.render(camera, settings), scene.session.image());
+  settings.leaves = true;
+  const render::FrameResult all = scene.session.render(camera, settings);
+  const Image allLeaves = scene.session.image();
+  settings.leafLodDistance = 0.6f * distance;  // about half the leaves kept, each grown by up to 1.7
+  const render::FrameResult thinned = scene.session.render(camera, settings);
+  const Image thinnedLeaves = scene.session.image();
+  const auto cover = [&bare](const Image& image) {
+    const std::vector<bool> differs = differingPixels(image, bare);
+    return static_cast<double>(std::count(differs.begin(), differs.end(), true));
+  };
+  const double kept = static_cast<double>(thinned.gpu.triangles - (all.gpu.triangles - 2 * scene.skeleton.leaves.size())) /
+                      (2.0 * static_cast<double>(scene.skeleton.leaves.size()));
+  INFO("kept " << kept << " of the leaves; leaf pixels " << cover(thinnedLeaves) << " against " << cover(allLeaves) << " with all");
+  REQUIRE(kept < 0.6);
+  CHECK(cover(thinnedLeaves) > 0.8 * cover(allLeaves));
+  CHECK(cover(thinnedLeaves) < 1.25 * cover(allLeaves));
 }
 
 TEST_CASE("leaves with the sun behind them glow yellow-green, self-shadowing darkens the crown", "[render][leaves]") {
