@@ -17,7 +17,7 @@ layout(location = 3) out float radius;
 void main() {
   // The wind moves each vertex once (flat mode has no control points to rebuild).
   vec3 position = positionRadius.xyz;
-  if (draw.windHeight > 0.0) {
+  if (kWind && draw.windHeight > 0.0) {
     uint w = ARBOR_WIND_VEC4S * uint(gl_VertexIndex);
     position += windOffset(position, windPoints[w], windPoints[w + 1u], draw.windHeight);
   }

@@ -17,7 +17,7 @@ void main() {
   uint index = cardIndex();
   Impostor segment = impostors[index];
   vec3 from = segment.fromRadius.xyz, to = segment.toRadius.xyz;
-  if (draw.windHeight > 0.0) {  // both ends move with their skeleton nodes
+  if (kWind && draw.windHeight > 0.0) {  // both ends move with their skeleton nodes
     uint w = draw.impostorWindBase + 2u * ARBOR_WIND_VEC4S * index;
     from += windOffset(from, windPoints[w], windPoints[w + 1u], draw.windHeight);
     to += windOffset(to, windPoints[w + 2u], windPoints[w + 3u], draw.windHeight);

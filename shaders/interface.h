@@ -62,10 +62,11 @@
 #define ARBOR_DRAW_CONSTANTS_BYTES 80
 #define ARBOR_PASS_CONSTANTS_BYTES 128
 
-// Specialization constants (bools) of the tree's vertex and evaluation stages: lavapipe runs both sides of a
+// Specialization constants (bools) of the tree's and the cards' vertex and evaluation stages: lavapipe runs both sides of a
 // branch on a uniform, so what is off costs as much as what is on unless a pipeline variant compiles it out.
 #define ARBOR_SPEC_DISPLACED 0  // displacement along the normal (bark.glsl)
 #define ARBOR_SPEC_CAPTURE 1    // ACC's evaluation stage writes its points to the capture buffer (tests)
+#define ARBOR_SPEC_WIND 2       // the flat mesh's, leaves' and fake branches' vertex stages move with the wind (wind.glsl)
 
 // Bytes of one VkDrawIndirectCommand.
 #define ARBOR_DRAW_COMMAND_BYTES 16

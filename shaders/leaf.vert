@@ -19,7 +19,7 @@ void main() {
   // The wind moves the blade's base with its node and flutters its tip along its normal.
   vec3 restBase = leaf.positionLength.xyz;
   float flutter = 0.0;
-  if (draw.windHeight > 0.0) {
+  if (kWind && draw.windHeight > 0.0) {
     uint w = draw.leafWindBase + ARBOR_WIND_VEC4S * i;
     restBase += windOffset(restBase, windPoints[w], windPoints[w + 1u], draw.windHeight);
     flutter = leafFlutter(windPoints[w + 1u].w);

@@ -1,6 +1,10 @@
 // Wind (docs/wind.md): how far a point moves, from its rest position and its wind record. The same function as
 // generator/tree/wind.cpp's windOffset, which the tests hold this to. Needs the scene uniforms.
 
+// Whether this pipeline's vertex stage moves with the wind: set per pipeline variant (interface.h), as lavapipe
+// would run the wind code for every vertex in still air too.
+layout(constant_id = ARBOR_SPEC_WIND) const bool kWind = false;
+
 // Radians into the gust period at this frame.
 float windAngle() { return 2.0 * PI * scene.wind.w * scene.windClock.x; }
 

@@ -49,7 +49,7 @@ struct PipelineSpec {
   bool depthWrite = true;
   bool wireframe = false;
   bool cullBack = true;
-  std::array<VkBool32, 2> specialization{};  // ARBOR_SPEC_DISPLACED, ARBOR_SPEC_CAPTURE, for every stage
+  std::array<VkBool32, 3> specialization{};  // ARBOR_SPEC_DISPLACED, _CAPTURE and _WIND, for every stage
 };
 
 VkShaderModule module(VkDevice device, const Stage& s) {
@@ -64,8 +64,9 @@ VkShaderModule module(VkDevice device, const Stage& s) {
 VkPipeline build(VkDevice device, VkRenderPass renderPass, VkPipelineLayout layout, VkSampleCountFlagBits samples,
                  const PipelineSpec& spec) {
   // A stage that declares neither constant ignores them.
-  const std::array<VkSpecializationMapEntry, 2> entries{{{ARBOR_SPEC_DISPLACED, 0, sizeof(VkBool32)},
-                                                         {ARBOR_SPEC_CAPTURE, sizeof(VkBool32), sizeof(VkBool32)}}};
+  const std::array<VkSpecializationMapEntry, 3> entries{{{ARBOR_SPEC_DISPLACED, 0, sizeof(VkBool32)},
+                                                         {ARBOR_SPEC_CAPTURE, sizeof(VkBool32), sizeof(VkBool32)},
+                                                         {ARBOR_SPEC_WIND, 2 * sizeof(VkBool32), sizeof(VkBool32)}}};
   const VkSpecializationInfo specialization{static_cast<std::uint32_t>(entries.size()), entries.data(), sizeof spec.specialization,
                                             spec.specialization.data()};
   std::vector<VkShaderModule> modules;
@@ -215,10 +216,10 @@ SurfacePipelines buildSurface(const Pipelines& p, const PipelineSpec& spec, bool
 }
 
 // The tree in `info`'s mode: its own stages (or its factor-1 vertex stage) with the bark fragment stage.
-PipelineSpec treeSpec(const RenderModeInfo& info, bool corners, bool displaced, bool capture) {
+PipelineSpec treeSpec(const RenderModeInfo& info, bool corners, bool displaced, bool capture, bool windy) {
   const Stage fragment = stage(VK_SHADER_STAGE_FRAGMENT_BIT, spirv_tree_frag);
   PipelineSpec spec{{stage(VK_SHADER_STAGE_VERTEX_BIT, corners ? info.corners : info.vertex), fragment}};
-  spec.specialization = {displaced ? VK_TRUE : VK_FALSE, capture ? VK_TRUE : VK_FALSE};
+  spec.specialization = {displaced ? VK_TRUE : VK_FALSE, capture ? VK_TRUE : VK_FALSE, windy ? VK_TRUE : VK_FALSE};
   if (info.primitive == PatchPrimitive::None) {
     spec.treeVertices = true;
   } else if (!corners) {
@@ -233,23 +234,38 @@ PipelineSpec treeSpec(const RenderModeInfo& info, bool corners, bool displaced, 
 
 const SurfacePipelines& Pipelines::surface(RenderMode mode, std::size_t variant) {
   const RenderModeInfo& info = renderModeInfo(mode);
-  const bool displaced = info.primitive != PatchPrimitive::None && (variant & 1u) != 0;
+  const bool tessellated = info.primitive != PatchPrimitive::None;
+  const bool displaced = tessellated && (variant & 1u) != 0;
   const bool capture = info.captures && (variant & 2u) != 0;
-  SurfacePipelines& s = modes[static_cast<std::size_t>(mode)].surface[pipelineVariant(displaced, capture)];
-  if (!s.fill) s = buildSurface(*this, treeSpec(info, false, displaced, capture), !capture);
+  const bool windy = !tessellated && (variant & 4u) != 0;
+  SurfacePipelines& s = modes[static_cast<std::size_t>(mode)].surface[pipelineVariant(displaced, capture, windy)];
+  if (!s.fill) s = buildSurface(*this, treeSpec(info, false, displaced, capture, windy), !capture);
   return s;
+}
+
+VkPipeline Pipelines::cards(bool leafCards, bool windy) {
+  VkPipeline& p = (leafCards ? leaves : impostors)[windy ? 1 : 0];
+  if (p) return p;
+  // Indexed triangles whose vertex stage reads its leaf or segment by gl_VertexIndex (cards.hpp).
+  PipelineSpec spec{leafCards ? std::vector<Stage>{stage(VK_SHADER_STAGE_VERTEX_BIT, spirv_leaf_vert), stage(VK_SHADER_STAGE_FRAGMENT_BIT, spirv_leaf_frag)}
+                              : std::vector<Stage>{stage(VK_SHADER_STAGE_VERTEX_BIT, spirv_impostor_vert),
+                                                   stage(VK_SHADER_STAGE_FRAGMENT_BIT, spirv_impostor_frag)}};
+  spec.cullBack = false;  // a leaf is seen from both sides; a fake branch's winding depends on its direction on screen
+  spec.specialization[2] = windy ? VK_TRUE : VK_FALSE;
+  p = build(device, renderPass, layout, samples, spec);
+  return p;
 }
 
 const SurfacePipelines& Pipelines::corners(RenderMode mode, bool displaced) {
   const RenderModeInfo& info = renderModeInfo(mode);
   if (info.primitive == PatchPrimitive::None) throw std::logic_error("the flat mode draws no patches at factor 1");
   SurfacePipelines& s = modes[static_cast<std::size_t>(mode)].corners[displaced ? 1 : 0];
-  if (!s.fill) s = buildSurface(*this, treeSpec(info, true, displaced, false), true);
+  if (!s.fill) s = buildSurface(*this, treeSpec(info, true, displaced, false, false), true);
   return s;
 }
 
 void Pipelines::destroy() {
-  std::vector<VkPipeline> all{sky, ground, leaves, impostors, ceiling, lines, cull, drawCommands, wind};
+  std::vector<VkPipeline> all{sky, ground, leaves[0], leaves[1], impostors[0], impostors[1], ceiling, lines, cull, drawCommands, wind};
   for (const ModePipelines& m : modes) {
     all.push_back(m.build);
     auto add = [&](const SurfacePipelines& s) { all.insert(all.end(), {s.fill, s.wireframe, s.twoSided}); };
@@ -323,13 +339,6 @@ Pipelines createPipelines(const vk::VulkanContext& context, VkRenderPass renderP
     if (info.primitive == PatchPrimitive::None) continue;
     p.modes[static_cast<std::size_t>(info.mode)].build = buildCompute(device, p.computeLayout, stage(VK_SHADER_STAGE_COMPUTE_BIT, info.build));
   }
-  // Cards (cards.hpp): indexed triangles whose vertex stage reads its leaf or segment by gl_VertexIndex.
-  PipelineSpec leaves{{stage(VK_SHADER_STAGE_VERTEX_BIT, spirv_leaf_vert), stage(VK_SHADER_STAGE_FRAGMENT_BIT, spirv_leaf_frag)}};
-  leaves.cullBack = false;  // a leaf is seen from both sides
-  p.leaves = build(device, renderPass, p.layout, samples, leaves);
-  PipelineSpec impostors{{stage(VK_SHADER_STAGE_VERTEX_BIT, spirv_impostor_vert), stage(VK_SHADER_STAGE_FRAGMENT_BIT, spirv_impostor_frag)}};
-  impostors.cullBack = false;  // the card's winding depends on which way the branch points on screen
-  p.impostors = build(device, renderPass, p.layout, samples, impostors);
   return p;
 }
 

@@ -17,14 +17,17 @@ struct SurfacePipelines {
   VkPipeline twoSided = VK_NULL_HANDLE;   // no culling: back faces seen through cracks show (crack tests)
 };
 
-// A tessellated mode's pipeline variants (interface.h's specialization constants): lavapipe runs both sides of
-// every branch, so displacement and the test capture are compiled into their own variants instead.
-constexpr std::size_t kPipelineVariants = 4;
-constexpr std::size_t pipelineVariant(bool displaced, bool capture) { return (displaced ? 1u : 0u) + (capture ? 2u : 0u); }
+// Pipeline variants (interface.h's specialization constants): lavapipe runs both sides of every branch, so
+// displacement, the test capture and the wind are compiled into their own variants instead. Tessellated modes
+// vary by displacement and capture (their wind is the posed cage), the flat mode and the cards by wind.
+constexpr std::size_t kPipelineVariants = 8;
+constexpr std::size_t pipelineVariant(bool displaced, bool capture, bool windy = false) {
+  return (displaced ? 1u : 0u) + (capture ? 2u : 0u) + (windy ? 4u : 0u);
+}
 
 // One render mode's pipelines.
 struct ModePipelines {
-  // By pipelineVariant, each built on first use (Pipelines::surface); the flat mode has variant 0 only.
+  // By pipelineVariant, each built on first use (Pipelines::surface).
   std::array<SurfacePipelines, kPipelineVariants> surface;
   std::array<SurfacePipelines, 2> corners;  // tessellated modes: patches at factor 1 without the tessellator, by displaced
   VkPipeline build = VK_NULL_HANDLE;        // compute: control points once per mesh (tessellated modes)
@@ -38,8 +41,8 @@ struct Pipelines {
   VkPipeline cull = VK_NULL_HANDLE;          // per frame: cull, set factors, bucket (patch_cull.comp)
   VkPipeline drawCommands = VK_NULL_HANDLE;  // per frame: buckets -> indirect draws (draw_commands.comp)
   VkPipeline wind = VK_NULL_HANDLE;          // per frame with wind: the rest cage posed (wind.comp)
-  VkPipeline leaves = VK_NULL_HANDLE;     // cards (cards.hpp)
-  VkPipeline impostors = VK_NULL_HANDLE;  // fake branches, cards likewise
+  std::array<VkPipeline, 2> leaves{};     // cards (cards.hpp), still and windy: use cards()
+  std::array<VkPipeline, 2> impostors{};  // fake branches, cards likewise
   VkPipeline ceiling = VK_NULL_HANDLE;    // ACC's patches with trivial stages (bench tess)
   VkPipeline lines = VK_NULL_HANDLE;      // unlit coloured line lists (the modeller's wireframes)
   VkShaderStageFlags pushStages = 0;   // every stage the layout's push constants and bindings reach
@@ -49,6 +52,8 @@ struct Pipelines {
   // (RenderModeInfo::captures) gives its variant without capture.
   const SurfacePipelines& surface(RenderMode mode, std::size_t variant);
   const SurfacePipelines& corners(RenderMode mode, bool displaced);
+  // The leaf (or fake-branch) cards, still or moving with the wind, likewise built on first use.
+  VkPipeline cards(bool leaves, bool windy);
   void destroy();
 
   // What building a variant later (and destroy) needs.

@@ -58,6 +58,9 @@ std::uint32_t verticesPerPatch(RenderMode mode, float level) {
   return l % 2 == 0 ? 1 + 3 * l * (l + 2) / 4 : 3 * ((l + 1) / 2) * ((l + 1) / 2);
 }
 
+// Whether this tree moves in this frame's wind (it has wind records and the wind blows).
+bool movesInWind(const RenderSettings& s, const GpuTree& tree) { return s.wind.on() && tree.windHeight > 0.0f; }
+
 // The bark colour with the height in its alpha (unused before), so the bark fragment stage reads both in one
 // filtered lookup instead of two (the same picture, bit for bit).
 Image colorWithHeight(const Image& color, const Image& height) {
@@ -481,7 +484,7 @@ void TreeRenderer::beginFrame(VkCommandBuffer cmd, const Camera& camera, VkExten
   const RenderMode controlMode = s.mode;
   const auto m = static_cast<std::size_t>(controlMode);
   const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
-  auto windy = [&](const GpuTree& tree) { return s.wind.on() && tree.windHeight > 0.0f; };
+  auto windy = [&](const GpuTree& tree) { return movesInWind(s, tree); };
   // Returns whether the buffers were missing.
   auto ensureControl = [&](TreeControl& c, const InstancePlan& plan) {
     if (c.control[m].handle() != VK_NULL_HANDLE) return false;
@@ -616,7 +619,7 @@ void TreeRenderer::draw(VkCommandBuffer cmd, VkExtent2D extent, const RenderSett
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.layout, 0, 1, &frame.sets[tree], 0, nullptr);
     std::memcpy(constants.model, glm::value_ptr(model), sizeof constants.model);
     constants.leafCount = tree < trees_.size() ? trees_[tree]->leafCount : 0u;
-    const bool windy = tree < trees_.size() && s.wind.on() && trees_[tree]->windHeight > 0.0f;
+    const bool windy = tree < trees_.size() && movesInWind(s, *trees_[tree]);
     constants.windHeight = windy ? trees_[tree]->windHeight : 0.0f;
     constants.leafWindBase = windy ? trees_[tree]->leafWindBase : 0u;
     constants.impostorWindBase = windy ? trees_[tree]->impostorWindBase : 0u;
@@ -645,9 +648,10 @@ void TreeRenderer::draw(VkCommandBuffer cmd, VkExtent2D extent, const RenderSett
     const int planIndex = frame.planOf[i];
     const RenderMode drawn = planIndex >= 0 ? s.mode : RenderMode::Flat;
     const bool displaced = s.displacement != 0.0f;
+    const bool windy = movesInWind(s, tree);
     auto pick = [&](const SurfacePipelines& p) { return wire ? p.wireframe : s.revealBackFaces ? p.twoSided : p.fill; };
     if (planIndex < 0) {
-      const VkPipeline pipeline = pick(pipelines_.surface(RenderMode::Flat, 0));
+      const VkPipeline pipeline = pick(pipelines_.surface(RenderMode::Flat, pipelineVariant(false, false, windy)));
       if (!pipeline) return;
       vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
       const VkDeviceSize offset = 0;
@@ -699,7 +703,7 @@ void TreeRenderer::draw(VkCommandBuffer cmd, VkExtent2D extent, const RenderSett
     drawMesh(i, tree, false);
     const bool sketch = instance.far && tree.sketchCount > 0;
     const std::uint32_t impostors = sketch ? tree.sketchCount : tree.impostorCount;
-    if (s.impostors && impostors > 0) drawCards(pipelines_.impostors, impostors, sketch ? tree.impostorCount : 0u);
+    if (s.impostors && impostors > 0) drawCards(pipelines_.cards(false, movesInWind(s, tree)), impostors, sketch ? tree.impostorCount : 0u);
     if (s.leaves && tree.leafCount > 0) {
       // The vertex stage keeps a leaf when its rank (i + 1/2) / N is within the density, thinned with the square of
       // its distance beyond leafLodDistance: no leaf of this tree is nearer than its leaf box, so the leaves past
@@ -711,7 +715,7 @@ void TreeRenderer::draw(VkCommandBuffer cmd, VkExtent2D extent, const RenderSett
         share *= std::min(1.0, std::pow(static_cast<double>(s.leafLodDistance) / std::max(static_cast<double>(nearest), 1e-3), 2.0));
       }
       const double kept = share * tree.leafCount;
-      drawCards(pipelines_.leaves, std::min(tree.leafCount, static_cast<std::uint32_t>(kept + 0.5) + 1u));
+      drawCards(pipelines_.cards(true, movesInWind(s, tree)), std::min(tree.leafCount, static_cast<std::uint32_t>(kept + 0.5) + 1u));
     }
   }
   if (frame.statistics) vkCmdEndQuery(cmd, frame.statistics, 0);
