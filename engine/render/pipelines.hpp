@@ -53,7 +53,7 @@ struct Pipelines {
   const SurfacePipelines& surface(RenderMode mode, std::size_t variant);
   const SurfacePipelines& corners(RenderMode mode, bool displaced);
   // The leaf (or fake-branch) cards, still or moving with the wind, likewise built on first use.
-  VkPipeline cards(bool leaves, bool windy);
+  VkPipeline cards(bool leafCards, bool windy);
   void destroy();
 
   // What building a variant later (and destroy) needs.
