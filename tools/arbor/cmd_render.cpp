@@ -202,7 +202,7 @@ void addRenderCommand(CLI::App& app, Action& action) {
                 kMeshDisplacedHelp);
   cmd->add_flag("--leaves", o->leaves, "Draw the leaves (textured quads from the leaf atlas, back-lit, self-shadowed)");
   cmd->add_option("--leaf-density", o->leafDensity, "Share of the leaves drawn, 0 to 1")->check(Number(0.0f, 1.0f))->capture_default_str();
-  cmd->add_option("--leaf-lod", o->leafLod, "All leaves up to this distance in metres, then fewer with distance squared (0: all)")
+  cmd->add_option("--leaf-lod", o->leafLod, "All leaves up to this distance in metres, then fewer with distance squared, grown to keep the leaf area (0: all)")
       ->check(Number(0.0f, 10000.0f))
       ->capture_default_str();
   cmd->add_option("--shadow-leaves", o->shadowLeaves, "Self-shadowing: each leaf tests this many others (0: off)")

@@ -165,7 +165,7 @@ void addViewCommand(CLI::App& app, Action& action) {
   addAnisotropyOption(cmd, o->anisotropy, "8; lavapipe: 1, where 8 costs about a third of the frame");
   cmd->add_option("--displace", o->displace, "Displacement scale")->check(Number(-10.0, 10.0));
   cmd->add_flag("--no-leaves", o->noLeaves, "Leave the leaves out");
-  cmd->add_option("--leaf-lod", o->leafLod, "All leaves up to this distance (m), then thinning (0: all)")->check(Number(0.0, 10000.0))->capture_default_str();
+  cmd->add_option("--leaf-lod", o->leafLod, "All leaves up to this distance (m), then fewer and larger ones, keeping the leaf area (0: all)")->check(Number(0.0, 10000.0))->capture_default_str();
   cmd->add_option("--shadow-leaves", o->shadowLeaves, "Leaf self-shadowing against this many leaves")->check(Whole(0, 4096))->capture_default_str();
   cmd->add_option("--detail", o->detail, "FULL,REDUCED[,FAR] metres: whole mesh within FULL, deepest level faked within REDUCED, two beyond; beyond FAR trees drawn without the tessellator, their fake branches as a sketch (default 40,150,400; lavapipe 0,15,60)");
   addWindOptions(cmd, o->wind, "the trees sway; also on the panel");
