@@ -13,7 +13,7 @@ constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
 }  // namespace
 
 Swapchain::Swapchain(const vk::VulkanContext& context, VkSurfaceKHR surface, VkExtent2D size, bool vsync)
-    : context_(context), surface_(surface), vsync_(vsync) {
+    : context_(context), surface_(surface), vsync_(vsync), acquireAhead_(context.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU) {
   VkBool32 presentable = VK_FALSE;
   vkGetPhysicalDeviceSurfaceSupportKHR(context.physicalDevice(), context.queueFamily(), surface, &presentable);
   if (!presentable) throw vk::VulkanError("the Vulkan device's graphics queue cannot present to this window");
@@ -94,6 +94,7 @@ Swapchain::Swapchain(const vk::VulkanContext& context, VkSurfaceKHR surface, VkE
 
 Swapchain::~Swapchain() {
   const VkDevice device = context_.device();
+  dropAcquiredAhead();
   vkDeviceWaitIdle(device);
   destroyImages();
   if (swapchain_) vkDestroySwapchainKHR(device, swapchain_, nullptr);
@@ -115,6 +116,7 @@ void Swapchain::destroyImages() {
 }
 
 void Swapchain::recreate(VkExtent2D size) {
+  dropAcquiredAhead();
   vkDeviceWaitIdle(context_.device());
   build(size);
 }
@@ -182,7 +184,13 @@ bool Swapchain::beginFrame(VkCommandBuffer& cmd) {
   const VkDevice device = context_.device();
   // The frame that last used this slot's command buffer, semaphores and the renderer's per-frame resources.
   vk::check(vkWaitForFences(device, 1, &inFlight_[frame_], VK_TRUE, UINT64_MAX), "vkWaitForFences");
-  const VkResult acquired = vkAcquireNextImageKHR(device, swapchain_, UINT64_MAX, imageAvailable_[frame_], VK_NULL_HANDLE, &current_);
+  VkResult acquired = VK_SUCCESS;
+  if (ahead_) {
+    current_ = aheadImage_;
+    ahead_ = false;
+  } else {
+    acquired = vkAcquireNextImageKHR(device, swapchain_, UINT64_MAX, imageAvailable_[frame_], VK_NULL_HANDLE, &current_);
+  }
   if (acquired == VK_ERROR_OUT_OF_DATE_KHR) return false;
   if (acquired != VK_SUBOPTIMAL_KHR) vk::check(acquired, "vkAcquireNextImageKHR");
   vk::check(vkResetFences(device, 1, &inFlight_[frame_]), "vkResetFences");
@@ -218,6 +226,7 @@ bool Swapchain::endFrame(bool wait) {
   submit.signalSemaphoreCount = 1;
   submit.pSignalSemaphores = &renderFinished_[frame];
   vk::check(vkQueueSubmit(context_.queue(), 1, &submit, inFlight_[frame]), "vkQueueSubmit");
+  if (acquireAhead_) acquireNext();
   VkPresentInfoKHR present{VK_STRUCTURE_TYPE_PRESENT_INFO_KHR};
   present.waitSemaphoreCount = 1;
   present.pWaitSemaphores = &renderFinished_[frame];
@@ -229,6 +238,28 @@ bool Swapchain::endFrame(bool wait) {
   if (presented == VK_ERROR_OUT_OF_DATE_KHR || presented == VK_SUBOPTIMAL_KHR) return false;
   vk::check(presented, "vkQueuePresentKHR");
   return true;
+}
+
+void Swapchain::acquireNext() {
+  const VkDevice device = context_.device();
+  // The semaphore's last wait belongs to the frame that used this slot before; it has run once its fence is set.
+  vk::check(vkWaitForFences(device, 1, &inFlight_[frame_], VK_TRUE, UINT64_MAX), "vkWaitForFences");
+  // Without waiting: where no image is free now (or the window changed), beginFrame acquires as usual.
+  const VkResult acquired = vkAcquireNextImageKHR(device, swapchain_, 0, imageAvailable_[frame_], VK_NULL_HANDLE, &aheadImage_);
+  ahead_ = acquired == VK_SUCCESS || acquired == VK_SUBOPTIMAL_KHR;
+}
+
+void Swapchain::dropAcquiredAhead() {
+  if (!ahead_) return;
+  // A batch that waits on the acquire's semaphore leaves it unsignalled for the next acquire.
+  const VkPipelineStageFlags stage = VK_PIPELINE_STAGE_ALL_COMMANDS_BIT;
+  VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+  submit.waitSemaphoreCount = 1;
+  submit.pWaitSemaphores = &imageAvailable_[frame_];
+  submit.pWaitDstStageMask = &stage;
+  vk::check(vkQueueSubmit(context_.queue(), 1, &submit, VK_NULL_HANDLE), "vkQueueSubmit");
+  vk::check(vkQueueWaitIdle(context_.queue()), "vkQueueWaitIdle");
+  ahead_ = false;
 }
 
 void Swapchain::waitIdle() const { vkDeviceWaitIdle(context_.device()); }

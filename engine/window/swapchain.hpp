@@ -36,12 +36,16 @@ class Swapchain {
   // Ends the command buffer, submits and presents; with `wait`, also waits until the frame has completed (for
   // a screenshot or statistics). False: out of date or suboptimal (recreate).
   bool endFrame(bool wait);
+  // Whether endFrame acquires the next frame's image before presenting (software devices, below).
+  bool acquiresAhead() const { return acquireAhead_; }
   void waitIdle() const;
   Image screenshot() const;  // RGBA, row 0 at the top, of the last frame that recorded one
 
  private:
   void build(VkExtent2D size);
   void destroyImages();
+  void acquireNext();
+  void dropAcquiredAhead();
 
   const vk::VulkanContext& context_;
   VkSurfaceKHR surface_;
@@ -62,6 +66,12 @@ class Swapchain {
   std::uint32_t frame_ = 0;    // which of the frames in flight is being recorded
   std::uint32_t current_ = 0;  // the acquired image
   bool swizzle_ = false;  // BGRA images
+  // On a software device (lavapipe) presenting sends the picture to the X server, and every acquire asks the server
+  // for the window's size, a round trip that waits until the server has taken in the picture sent before: acquired
+  // before presenting, the next image is there at once and the next frame's work overlaps the server's reading.
+  bool acquireAhead_ = false;
+  bool ahead_ = false;          // an image is acquired for the next frame, its semaphore imageAvailable_[frame_]
+  std::uint32_t aheadImage_ = 0;
 };
 
 }  // namespace arbor::window

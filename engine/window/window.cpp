@@ -1,5 +1,8 @@
 #include "window.hpp"
 
+#include <dlfcn.h>
+#include <sys/socket.h>
+
 #include <algorithm>
 #include <stdexcept>
 
@@ -22,6 +25,21 @@ bool initGlfw() {
   return ok;
 }
 
+// A software device (lavapipe) presents to X11 by writing every frame's pixels into the display connection, 3.7 MB
+// at 1280 x 720, and waits while the server reads them unless the socket's send buffer holds the whole frame; room
+// for one lets the next frame's work start at once. Looked up at run time: GLFW may be built without X11.
+void roomForAFrameOnTheDisplayConnection() {
+  using GetDisplay = void* (*)();
+  using ConnectionNumber = int (*)(void*);
+  const auto display = reinterpret_cast<GetDisplay>(dlsym(RTLD_DEFAULT, "glfwGetX11Display"));
+  const auto connection = reinterpret_cast<ConnectionNumber>(dlsym(RTLD_DEFAULT, "XConnectionNumber"));
+  void* x11 = display && connection ? display() : nullptr;
+  if (!x11) return;
+  const int socket = connection(x11);
+  const int bytes = 16 << 20;  // a 1920 x 1080 frame twice; the kernel caps it at net.core.wmem_max unless privileged
+  if (setsockopt(socket, SOL_SOCKET, SO_SNDBUFFORCE, &bytes, sizeof bytes) != 0) setsockopt(socket, SOL_SOCKET, SO_SNDBUF, &bytes, sizeof bytes);
+}
+
 }  // namespace
 
 bool displayAvailable() { return initGlfw() && glfwVulkanSupported() == GLFW_TRUE; }
@@ -38,6 +56,7 @@ Window::Window(const std::string& title, int width, int height) {
   glfwWindowHint(GLFW_RESIZABLE, GLFW_TRUE);
   window_ = glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);
   if (!window_) throw std::runtime_error("glfwCreateWindow failed");
+  roomForAFrameOnTheDisplayConnection();
   glfwSetScrollCallback(window_, [](GLFWwindow*, double, double y) { gScroll += y; });
   // Key presses arrive as events, so a tap shorter than a frame is not lost between two looks at the keys.
   // (Installed before the overlay's, which calls it on.)
@@ -45,6 +64,9 @@ Window::Window(const std::string& title, int width, int height) {
   glfwSetKeyCallback(window_, [](GLFWwindow* w, int key, int, int action, int) {
     if (action == GLFW_PRESS) static_cast<Window*>(glfwGetWindowUserPointer(w))->pressed_.push_back(key);
   });
+  // The size is asked of the window system again only after it reported a change.
+  glfwSetFramebufferSizeCallback(window_, [](GLFWwindow* w, int, int) { static_cast<Window*>(glfwGetWindowUserPointer(w))->sizeKnown_ = false; });
+  glfwSetWindowIconifyCallback(window_, [](GLFWwindow* w, int) { static_cast<Window*>(glfwGetWindowUserPointer(w))->sizeKnown_ = false; });
 }
 
 Window::~Window() {
@@ -64,10 +86,14 @@ void Window::pollEvents() {
   glfwPollEvents();
 }
 
-VkExtent2D Window::framebufferSize() const {
+VkExtent2D Window::framebufferSize() const { return sizeKnown_ ? size_ : queryFramebufferSize(); }
+
+VkExtent2D Window::queryFramebufferSize() const {
   int w = 0, h = 0;
   glfwGetFramebufferSize(window_, &w, &h);
-  return {static_cast<std::uint32_t>(std::max(w, 0)), static_cast<std::uint32_t>(std::max(h, 0))};
+  size_ = {static_cast<std::uint32_t>(std::max(w, 0)), static_cast<std::uint32_t>(std::max(h, 0))};
+  sizeKnown_ = true;
+  return size_;
 }
 
 void Window::waitWhileMinimised() {
@@ -75,6 +101,7 @@ void Window::waitWhileMinimised() {
 }
 
 void Window::toggleFullscreen() {
+  sizeKnown_ = false;
   if (glfwGetWindowMonitor(window_)) {
     glfwSetWindowMonitor(window_, nullptr, windowedX_, windowedY_, windowedWidth_, windowedHeight_, 0);
     return;
@@ -87,9 +114,18 @@ void Window::toggleFullscreen() {
   glfwSetWindowMonitor(window_, monitor, 0, 0, mode->width, mode->height, mode->refreshRate);
 }
 
-void Window::resize(int width, int height) { glfwSetWindowSize(window_, width, height); }
-void Window::minimise() { glfwIconifyWindow(window_); }
-void Window::restore() { glfwRestoreWindow(window_); }
+void Window::resize(int width, int height) {
+  glfwSetWindowSize(window_, width, height);
+  sizeKnown_ = false;
+}
+void Window::minimise() {
+  glfwIconifyWindow(window_);
+  sizeKnown_ = false;
+}
+void Window::restore() {
+  glfwRestoreWindow(window_);
+  sizeKnown_ = false;
+}
 
 bool Window::keyHeld(int key) const { return glfwGetKey(window_, key) == GLFW_PRESS; }
 

@@ -28,8 +28,11 @@ class Window {
 
   bool shouldClose() const;
   void pollEvents();
-  // Framebuffer size in pixels; 0 x 0 while minimised.
+  // Framebuffer size in pixels; 0 x 0 while minimised. Asked of the window system only after a change (on X11 the
+  // question is a round trip, which waits until the server has taken in the frame just presented).
   VkExtent2D framebufferSize() const;
+  // The same, asked now (after the swapchain found itself out of date).
+  VkExtent2D queryFramebufferSize() const;
   void waitWhileMinimised();
   void toggleFullscreen();
   // Scripted window events (tests, demos).
@@ -50,6 +53,8 @@ class Window {
   double lastX_ = 0.0, lastY_ = 0.0;
   bool mouseKnown_ = false;
   std::vector<int> pressed_;  // keys that went down during the last pollEvents
+  mutable VkExtent2D size_{};
+  mutable bool sizeKnown_ = false;  // false after a resize, minimise or fullscreen, asked for or reported
 };
 
 }  // namespace arbor::window

@@ -34,7 +34,7 @@ class WindowTarget final : public FrameTarget {
   bool draw(const Recorder& before, const Recorder& inside, bool screenshot) override {
     VkCommandBuffer cmd = VK_NULL_HANDLE;
     if (!swapchain_.beginFrame(cmd)) {
-      swapchain_.recreate(window_.framebufferSize());
+      swapchain_.recreate(window_.queryFramebufferSize());
       return false;
     }
     before(cmd);
@@ -42,7 +42,7 @@ class WindowTarget final : public FrameTarget {
     if (screenshot) swapchain_.recordScreenshot(cmd);
     // Frames run behind the recording (two in flight) except when the picture or its figures are wanted now.
     completed_ = screenshot;
-    if (!swapchain_.endFrame(screenshot)) swapchain_.recreate(window_.framebufferSize());  // shown, but out of date now
+    if (!swapchain_.endFrame(screenshot)) swapchain_.recreate(window_.queryFramebufferSize());  // shown, but out of date now
     return true;
   }
   bool lastFrameCompleted() const override { return completed_; }
