@@ -143,6 +143,52 @@ TEST_CASE("the viewer answers keys: F12 takes a screenshot, W moves the camera, 
   CHECK(moved.pixelsOverThreshold > 1000);  // W brought the orbit camera closer
 }
 
+// Saturated green to the right of the panel (the first 450 columns): the palm's fronds.
+std::size_t leafPixelsBesidePanel(const Image& image) {
+  std::size_t leaves = 0;
+  for (int y = 0; y < image.height; ++y) {
+    for (int x = 450; x < image.width; ++x) {
+      const std::size_t i = 4 * (static_cast<std::size_t>(y) * static_cast<std::size_t>(image.width) + static_cast<std::size_t>(x));
+      const int r = image.rgba[i], g = image.rgba[i + 1], b = image.rgba[i + 2];
+      leaves += g > r + 25 && g > b + 25 ? 1 : 0;
+    }
+  }
+  return leaves;
+}
+
+TEST_CASE("the viewer's panel answers the mouse: a click on 'leaves' hides them", "[view]") {
+  // The panel follows the pointer from its events (window/overlay.cpp), not from questions to X11: xdotool moves
+  // the pointer onto the checkbox and clicks, press and release likely within one frame, then F12 shows the result.
+  const std::string dir = freshDir("view-click"), log = test::tempPath("view-click.log"), script = test::tempPath("view-click.sh");
+  std::ofstream(script) << "log=" << log << "\n"
+                        << "waitfor() { i=0; until grep -q \"$1\" $log; do i=$((i+1)); [ $i -gt 1200 ] && { echo \"timed out waiting for $1\"; return 1; }; sleep 0.05; done; }\n"
+                        << ARBOR_BINARY << " view --validation palm --size 800x600 --out " << dir << " > $log 2>&1 &\n"
+                        << "pid=$!\n"
+                        << "waitfor 'interactive on' || { kill $pid; exit 1; }\n"
+                        << "win=$(timeout 60 xdotool search --sync --name '^Arbor$' | head -1)\n"
+                        << "xdotool windowfocus --sync \"$win\"\n"
+                        << "xdotool key F12\n"
+                        << "waitfor 'frame-0001.png' || { kill $pid; exit 1; }\n"
+                        << "xdotool mousemove --window \"$win\" --sync 27 426 click 1 key F12\n"  // the 'leaves' checkbox
+                        << "waitfor 'frame-0002.png' || { kill $pid; exit 1; }\n"
+                        << "xdotool key Escape\n"
+                        << "(sleep 120; kill $pid) > /dev/null 2>&1 &\n"
+                        << "watchdog=$!\n"
+                        << "wait $pid; status=$?\n"
+                        << "kill $watchdog 2>/dev/null\n"
+                        << "exit $status\n";
+  const Result r = runCommand(kXvfb + " sh " + script + " 2>&1");
+  std::ifstream in(log);
+  const std::string output((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  INFO(r.output << output);
+  REQUIRE(r.exitCode == 0);
+  const std::size_t before = leafPixelsBesidePanel(readPng((fs::path(dir) / "frame-0001.png").string()));
+  const std::size_t after = leafPixelsBesidePanel(readPng((fs::path(dir) / "frame-0002.png").string()));
+  INFO("leaf pixels before " << before << ", after " << after);
+  CHECK(before > 500);
+  CHECK(after * 20 < before);
+}
+
 TEST_CASE("the viewer's trees sway in the wind, still air draws them as without wind", "[view][wind]") {
   const std::string path = palmPath();
   const std::string common = "palm --size 160x120 --camera-path " + path + " --frames 2 --screenshot-every 2 --out ";

@@ -2,15 +2,18 @@
 // The Dear ImGui overlay drawn into the window's render pass (GLFW and Vulkan backends of ImGui 1.86).
 #include <vulkan/vulkan.h>
 
-#include "vk/context.hpp"
+#include <array>
 
-struct GLFWwindow;
+#include "vk/context.hpp"
+#include "window.hpp"
+
+struct GLFWcursor;
 
 namespace arbor::window {
 
 class Overlay {
  public:
-  Overlay(const vk::VulkanContext& context, GLFWwindow* window, VkRenderPass renderPass, std::uint32_t imageCount);
+  Overlay(const vk::VulkanContext& context, const Window& window, VkRenderPass renderPass, std::uint32_t imageCount);
   ~Overlay();
   Overlay(const Overlay&) = delete;
   Overlay& operator=(const Overlay&) = delete;
@@ -22,8 +25,14 @@ class Overlay {
   bool wantsKeyboard() const;
 
  private:
+  void platformFrame();
+
   const vk::VulkanContext& context_;
+  const Window& window_;
   VkDescriptorPool pool_ = VK_NULL_HANDLE;
+  double time_ = 0.0;                        // of the last frame, for ImGui's frame time
+  std::array<GLFWcursor*, 9> cursors_{};    // by ImGuiMouseCursor (null: the arrow)
+  int cursor_ = -2;                          // the shape set last
 };
 
 }  // namespace arbor::window

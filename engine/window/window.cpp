@@ -50,6 +50,8 @@ std::vector<const char*> requiredInstanceExtensions() {
   return std::vector<const char*>(names, names + count);
 }
 
+Window& Window::self(GLFWwindow* window) { return *static_cast<Window*>(glfwGetWindowUserPointer(window)); }
+
 Window::Window(const std::string& title, int width, int height) {
   if (!displayAvailable()) throw std::runtime_error("no display: cannot open a window (set DISPLAY, or render offscreen)");
   glfwWindowHint(GLFW_CLIENT_API, GLFW_NO_API);
@@ -62,11 +64,24 @@ Window::Window(const std::string& title, int width, int height) {
   // (Installed before the overlay's, which calls it on.)
   glfwSetWindowUserPointer(window_, this);
   glfwSetKeyCallback(window_, [](GLFWwindow* w, int key, int, int action, int) {
-    if (action == GLFW_PRESS) static_cast<Window*>(glfwGetWindowUserPointer(w))->pressed_.push_back(key);
+    if (action == GLFW_PRESS) self(w).pressed_.push_back(key);
   });
   // The size is asked of the window system again only after it reported a change.
-  glfwSetFramebufferSizeCallback(window_, [](GLFWwindow* w, int, int) { static_cast<Window*>(glfwGetWindowUserPointer(w))->sizeKnown_ = false; });
-  glfwSetWindowIconifyCallback(window_, [](GLFWwindow* w, int) { static_cast<Window*>(glfwGetWindowUserPointer(w))->sizeKnown_ = false; });
+  glfwSetFramebufferSizeCallback(window_, [](GLFWwindow* w, int, int) { self(w).sizeKnown_ = false; });
+  glfwSetWindowIconifyCallback(window_, [](GLFWwindow* w, int) { self(w).sizeKnown_ = false; });
+  // The pointer is followed by its events; the overlay's callbacks, installed after these, call them on.
+  glfwGetCursorPos(window_, &cursorX_, &cursorY_);
+  cursorInside_ = glfwGetWindowAttrib(window_, GLFW_HOVERED) == GLFW_TRUE;
+  focused_ = glfwGetWindowAttrib(window_, GLFW_FOCUSED) == GLFW_TRUE;
+  glfwSetCursorPosCallback(window_, [](GLFWwindow* w, double x, double y) {
+    self(w).cursorX_ = x;
+    self(w).cursorY_ = y;
+  });
+  glfwSetCursorEnterCallback(window_, [](GLFWwindow* w, int entered) { self(w).cursorInside_ = entered == GLFW_TRUE; });
+  glfwSetWindowFocusCallback(window_, [](GLFWwindow* w, int focused) { self(w).focused_ = focused == GLFW_TRUE; });
+  glfwSetMouseButtonCallback(window_, [](GLFWwindow* w, int button, int action, int) {
+    if (action == GLFW_PRESS) self(w).buttonsPressed_.push_back(button);
+  });
 }
 
 Window::~Window() {
@@ -83,6 +98,7 @@ bool Window::shouldClose() const { return glfwWindowShouldClose(window_) == GLFW
 
 void Window::pollEvents() {
   pressed_.clear();
+  buttonsPressed_.clear();
   glfwPollEvents();
 }
 
@@ -92,8 +108,15 @@ VkExtent2D Window::queryFramebufferSize() const {
   int w = 0, h = 0;
   glfwGetFramebufferSize(window_, &w, &h);
   size_ = {static_cast<std::uint32_t>(std::max(w, 0)), static_cast<std::uint32_t>(std::max(h, 0))};
+  glfwGetWindowSize(window_, &w, &h);
+  windowSize_ = {static_cast<std::uint32_t>(std::max(w, 0)), static_cast<std::uint32_t>(std::max(h, 0))};
   sizeKnown_ = true;
   return size_;
+}
+
+VkExtent2D Window::windowSize() const {
+  if (!sizeKnown_) queryFramebufferSize();
+  return windowSize_;
 }
 
 void Window::waitWhileMinimised() {
@@ -134,13 +157,17 @@ bool Window::keyPressed(int key) { return std::find(pressed_.begin(), pressed_.e
 bool Window::mouseLookHeld() const { return glfwGetMouseButton(window_, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS; }
 
 void Window::takeMouseDelta(double& dx, double& dy) {
-  double x = 0.0, y = 0.0;
-  glfwGetCursorPos(window_, &x, &y);
-  dx = mouseKnown_ ? x - lastX_ : 0.0;
-  dy = mouseKnown_ ? y - lastY_ : 0.0;
-  lastX_ = x;
-  lastY_ = y;
+  dx = mouseKnown_ ? cursorX_ - lastX_ : 0.0;
+  dy = mouseKnown_ ? cursorY_ - lastY_ : 0.0;
+  lastX_ = cursorX_;
+  lastY_ = cursorY_;
   mouseKnown_ = true;
+}
+
+bool Window::mouseButtonHeld(int button) const { return glfwGetMouseButton(window_, button) == GLFW_PRESS; }
+
+bool Window::mouseButtonPressed(int button) const {
+  return std::find(buttonsPressed_.begin(), buttonsPressed_.end(), button) != buttonsPressed_.end();
 }
 
 double Window::takeScroll() {

@@ -33,6 +33,7 @@ class Window {
   VkExtent2D framebufferSize() const;
   // The same, asked now (after the swapchain found itself out of date).
   VkExtent2D queryFramebufferSize() const;
+  VkExtent2D windowSize() const;  // in screen coordinates (the framebuffer's on X11; fewer on high-DPI screens)
   void waitWhileMinimised();
   void toggleFullscreen();
   // Scripted window events (tests, demos).
@@ -46,14 +47,25 @@ class Window {
   // Mouse motion in pixels since the last call.
   void takeMouseDelta(double& dx, double& dy);
   double takeScroll();
+  // The pointer as its events last told, never asked of the window system (on X11 each question is a round trip).
+  double cursorX() const { return cursorX_; }
+  double cursorY() const { return cursorY_; }
+  bool cursorInside() const { return cursorInside_; }
+  bool focused() const { return focused_; }
+  bool mouseButtonHeld(int button) const;
+  bool mouseButtonPressed(int button) const;  // went down during the last pollEvents (a click shorter than a frame)
 
  private:
+  static Window& self(GLFWwindow* window);  // the Window whose GLFW window an event came from
   GLFWwindow* window_ = nullptr;
   int windowedX_ = 0, windowedY_ = 0, windowedWidth_ = 0, windowedHeight_ = 0;
   double lastX_ = 0.0, lastY_ = 0.0;
   bool mouseKnown_ = false;
   std::vector<int> pressed_;  // keys that went down during the last pollEvents
-  mutable VkExtent2D size_{};
+  std::vector<int> buttonsPressed_;  // mouse buttons, likewise
+  double cursorX_ = 0.0, cursorY_ = 0.0;
+  bool cursorInside_ = false, focused_ = false;
+  mutable VkExtent2D size_{}, windowSize_{};
   mutable bool sizeKnown_ = false;  // false after a resize, minimise or fullscreen, asked for or reported
 };
 

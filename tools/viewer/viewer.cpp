@@ -107,7 +107,7 @@ int runViewer(const ViewerOptions& o, ViewState& state, ViewerScene& scene) {
     const std::unique_ptr<ViewerScene, void (*)(ViewerScene*)> stopScene(&scene, [](ViewerScene* sc) { sc->stop(); });
     scene.start(context, renderer);
     std::unique_ptr<window::Overlay> overlay;
-    if (win) overlay = std::make_unique<window::Overlay>(context, win->handle(), target->renderPass(), target->imageCount());
+    if (win) overlay = std::make_unique<window::Overlay>(context, *win, target->renderPass(), target->imageCount());
     // Offscreen without a script: one picture per stop of the scene's tour.
     const bool tour = offscreen && o.frames <= 0 && o.path.empty();
     const std::vector<render::Camera> tourStops = scene.tour(aspectOf(target->extent()));
