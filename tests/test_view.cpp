@@ -189,6 +189,39 @@ TEST_CASE("the viewer's panel answers the mouse: a click on 'leaves' hides them"
   CHECK(after * 20 < before);
 }
 
+TEST_CASE("the viewer follows a resize made by the window system, not by its script", "[view]") {
+  // The window keeps its size from GLFW's events (window/window.cpp): xdotool resizes it from outside, and the
+  // next screenshot has the new size.
+  const std::string dir = freshDir("view-outside-resize"), log = test::tempPath("view-outside-resize.log");
+  const std::string script = test::tempPath("view-outside-resize.sh");
+  std::ofstream(script) << "log=" << log << "\n"
+                        << "waitfor() { i=0; until grep -q \"$1\" $log; do i=$((i+1)); [ $i -gt 1200 ] && { echo \"timed out waiting for $1\"; return 1; }; sleep 0.05; done; }\n"
+                        << ARBOR_BINARY << " view --validation palm --size 320x240 --out " << dir << " > $log 2>&1 &\n"
+                        << "pid=$!\n"
+                        << "waitfor 'interactive on' || { kill $pid; exit 1; }\n"
+                        << "win=$(timeout 60 xdotool search --sync --name '^Arbor$' | head -1)\n"
+                        << "xdotool windowfocus --sync \"$win\"\n"
+                        << "xdotool key F12\n"
+                        << "waitfor 'frame-0001.png' || { kill $pid; exit 1; }\n"
+                        << "xdotool windowsize --sync \"$win\" 400 300 key F12\n"
+                        << "waitfor 'frame-0002.png' || { kill $pid; exit 1; }\n"
+                        << "xdotool key Escape\n"
+                        << "(sleep 120; kill $pid) > /dev/null 2>&1 &\n"
+                        << "watchdog=$!\n"
+                        << "wait $pid; status=$?\n"
+                        << "kill $watchdog 2>/dev/null\n"
+                        << "exit $status\n";
+  const Result r = runCommand(kXvfb + " sh " + script + " 2>&1");
+  std::ifstream in(log);
+  const std::string output((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  INFO(r.output << output);
+  REQUIRE(r.exitCode == 0);
+  CHECK(readPng((fs::path(dir) / "frame-0001.png").string()).width == 320);
+  const Image resized = readPng((fs::path(dir) / "frame-0002.png").string());
+  CHECK(resized.width == 400);
+  CHECK(resized.height == 300);
+}
+
 TEST_CASE("the viewer's trees sway in the wind, still air draws them as without wind", "[view][wind]") {
   const std::string path = palmPath();
   const std::string common = "palm --size 160x120 --camera-path " + path + " --frames 2 --screenshot-every 2 --out ";
