@@ -62,6 +62,47 @@ double treeShareInMiddle(const Image& image) {
   return static_cast<double>(tree) / static_cast<double>(total);
 }
 
+// Saturated green to the right of the panel (the first 450 columns): the palm's fronds.
+std::size_t leafPixelsBesidePanel(const Image& image) {
+  std::size_t leaves = 0;
+  for (int y = 0; y < image.height; ++y) {
+    for (int x = 450; x < image.width; ++x) {
+      const std::size_t i = 4 * (static_cast<std::size_t>(y) * static_cast<std::size_t>(image.width) + static_cast<std::size_t>(x));
+      const int r = image.rgba[i], g = image.rgba[i + 1], b = image.rgba[i + 2];
+      leaves += g > r + 25 && g > b + 25 ? 1 : 0;
+    }
+  }
+  return leaves;
+}
+
+// The viewer in a window under Xvfb driven by xdotool, as a user would: `steps` (shell lines that may use $win
+// and waitfor) run once the viewer has started, its window has focus and F12 has written frame-0001.png; then Esc.
+// Every step waits for the viewer to show it was taken (its start line, each screenshot's "wrote" line, its exit),
+// never for a fixed time: a loaded machine only makes it slower. Returns the run with the viewer's log appended.
+Result runInWindow(const std::string& name, const std::string& viewerArguments, const std::string& steps) {
+  const std::string log = test::tempPath(name + ".log"), script = test::tempPath(name + ".sh");
+  std::ofstream(script) << "log=" << log << "\n"
+                        << "waitfor() { i=0; until grep -q \"$1\" $log; do i=$((i+1)); [ $i -gt 1200 ] && { echo \"timed out waiting for $1\"; return 1; }; sleep 0.05; done; }\n"
+                        << ARBOR_BINARY << " view --validation " << viewerArguments << " > $log 2>&1 &\n"
+                        << "pid=$!\n"
+                        << "waitfor 'interactive on' || { kill $pid; exit 1; }\n"
+                        << "win=$(timeout 60 xdotool search --sync --name '^Arbor$' | head -1)\n"
+                        << "xdotool windowfocus --sync \"$win\"\n"
+                        << "xdotool key F12\n"
+                        << "waitfor 'frame-0001.png' || { kill $pid; exit 1; }\n"
+                        << steps << "\n"
+                        << "xdotool key Escape\n"
+                        << "(sleep 120; kill $pid) > /dev/null 2>&1 &\n"  // Esc not heard: end it, and fail
+                        << "watchdog=$!\n"
+                        << "wait $pid; status=$?\n"
+                        << "kill $watchdog 2>/dev/null\n"
+                        << "exit $status\n";
+  Result r = runCommand(kXvfb + " sh " + script + " 2>&1");
+  std::ifstream in(log);
+  r.output += std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  return r;
+}
+
 }  // namespace
 
 TEST_CASE("the viewer in a window shows the scripted frames, the same as offscreen, without validation errors", "[view]") {
@@ -109,32 +150,14 @@ TEST_CASE("the viewer survives resize, minimise, fullscreen and regeneration, ov
 }
 
 TEST_CASE("the viewer answers keys: F12 takes a screenshot, W moves the camera, Esc leaves", "[view]") {
-  const std::string dir = freshDir("view-keys"), log = test::tempPath("view-keys.log"), script = test::tempPath("view-keys.sh");
-  // xdotool types into the window under Xvfb. Every step waits for the viewer to show it was taken (its start
-  // line, each screenshot's "wrote" line, its exit), never for a fixed time: a loaded machine only makes it slower.
-  // --step 0.25 moves the camera by a quarter second's walk in every frame, however long the frame took.
-  std::ofstream(script) << "log=" << log << "\n"
-                        << "waitfor() { i=0; until grep -q \"$1\" $log; do i=$((i+1)); [ $i -gt 1200 ] && { echo \"timed out waiting for $1\"; return 1; }; sleep 0.05; done; }\n"
-                        << ARBOR_BINARY << " view --validation palm --size 240x180 --step 0.25 --out " << dir << " > $log 2>&1 &\n"
-                        << "pid=$!\n"
-                        << "waitfor 'interactive on' || { kill $pid; exit 1; }\n"
-                        << "win=$(timeout 60 xdotool search --sync --name '^Arbor$' | head -1)\n"
-                        << "xdotool windowfocus --sync \"$win\"\n"
-                        << "xdotool key F12\n"
-                        << "waitfor 'frame-0001.png' || { kill $pid; exit 1; }\n"
-                        << "xdotool keydown w\n"  // held while three more screenshots are taken: at least those frames walk
-                        << "for n in 2 3 4; do xdotool key F12; waitfor \"frame-000$n.png\" || { kill $pid; exit 1; }; done\n"
-                        << "xdotool keyup w\n"
-                        << "xdotool key Escape\n"
-                        << "(sleep 120; kill $pid) > /dev/null 2>&1 &\n"  // Esc not heard: end it, and fail
-                        << "watchdog=$!\n"
-                        << "wait $pid; status=$?\n"
-                        << "kill $watchdog 2>/dev/null\n"
-                        << "exit $status\n";
-  const Result r = runCommand(kXvfb + " sh " + script + " 2>&1");
-  std::ifstream in(log);
-  const std::string output((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  INFO(r.output << output);
+  const std::string dir = freshDir("view-keys");
+  // --step 0.25 moves the camera by a quarter second's walk in every frame, however long the frame took. W is held
+  // while three more screenshots are taken: at least those frames walk.
+  const Result r = runInWindow("view-keys", "palm --size 240x180 --step 0.25 --out " + dir,
+                               "xdotool keydown w\n"
+                               "for n in 2 3 4; do xdotool key F12; waitfor \"frame-000$n.png\" || { kill $pid; exit 1; }; done\n"
+                               "xdotool keyup w");
+  INFO(r.output);
   REQUIRE(r.exitCode == 0);  // Esc left the viewer, without a validation error
   REQUIRE(fs::exists(fs::path(dir) / "frame-0001.png"));
   REQUIRE(fs::exists(fs::path(dir) / "frame-0004.png"));
@@ -143,44 +166,14 @@ TEST_CASE("the viewer answers keys: F12 takes a screenshot, W moves the camera, 
   CHECK(moved.pixelsOverThreshold > 1000);  // W brought the orbit camera closer
 }
 
-// Saturated green to the right of the panel (the first 450 columns): the palm's fronds.
-std::size_t leafPixelsBesidePanel(const Image& image) {
-  std::size_t leaves = 0;
-  for (int y = 0; y < image.height; ++y) {
-    for (int x = 450; x < image.width; ++x) {
-      const std::size_t i = 4 * (static_cast<std::size_t>(y) * static_cast<std::size_t>(image.width) + static_cast<std::size_t>(x));
-      const int r = image.rgba[i], g = image.rgba[i + 1], b = image.rgba[i + 2];
-      leaves += g > r + 25 && g > b + 25 ? 1 : 0;
-    }
-  }
-  return leaves;
-}
-
 TEST_CASE("the viewer's panel answers the mouse: a click on 'leaves' hides them", "[view]") {
   // The panel follows the pointer from its events (window/overlay.cpp), not from questions to X11: xdotool moves
   // the pointer onto the checkbox and clicks, press and release likely within one frame, then F12 shows the result.
-  const std::string dir = freshDir("view-click"), log = test::tempPath("view-click.log"), script = test::tempPath("view-click.sh");
-  std::ofstream(script) << "log=" << log << "\n"
-                        << "waitfor() { i=0; until grep -q \"$1\" $log; do i=$((i+1)); [ $i -gt 1200 ] && { echo \"timed out waiting for $1\"; return 1; }; sleep 0.05; done; }\n"
-                        << ARBOR_BINARY << " view --validation palm --size 800x600 --out " << dir << " > $log 2>&1 &\n"
-                        << "pid=$!\n"
-                        << "waitfor 'interactive on' || { kill $pid; exit 1; }\n"
-                        << "win=$(timeout 60 xdotool search --sync --name '^Arbor$' | head -1)\n"
-                        << "xdotool windowfocus --sync \"$win\"\n"
-                        << "xdotool key F12\n"
-                        << "waitfor 'frame-0001.png' || { kill $pid; exit 1; }\n"
-                        << "xdotool mousemove --window \"$win\" --sync 27 426 click 1 key F12\n"  // the 'leaves' checkbox
-                        << "waitfor 'frame-0002.png' || { kill $pid; exit 1; }\n"
-                        << "xdotool key Escape\n"
-                        << "(sleep 120; kill $pid) > /dev/null 2>&1 &\n"
-                        << "watchdog=$!\n"
-                        << "wait $pid; status=$?\n"
-                        << "kill $watchdog 2>/dev/null\n"
-                        << "exit $status\n";
-  const Result r = runCommand(kXvfb + " sh " + script + " 2>&1");
-  std::ifstream in(log);
-  const std::string output((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  INFO(r.output << output);
+  const std::string dir = freshDir("view-click");
+  const Result r = runInWindow("view-click", "palm --size 800x600 --out " + dir,
+                               "xdotool mousemove --window \"$win\" --sync 27 426 click 1 key F12\n"  // the 'leaves' checkbox
+                               "waitfor 'frame-0002.png' || { kill $pid; exit 1; }");
+  INFO(r.output);
   REQUIRE(r.exitCode == 0);
   const std::size_t before = leafPixelsBesidePanel(readPng((fs::path(dir) / "frame-0001.png").string()));
   const std::size_t after = leafPixelsBesidePanel(readPng((fs::path(dir) / "frame-0002.png").string()));
@@ -192,29 +185,11 @@ TEST_CASE("the viewer's panel answers the mouse: a click on 'leaves' hides them"
 TEST_CASE("the viewer follows a resize made by the window system, not by its script", "[view]") {
   // The window keeps its size from GLFW's events (window/window.cpp): xdotool resizes it from outside, and the
   // next screenshot has the new size.
-  const std::string dir = freshDir("view-outside-resize"), log = test::tempPath("view-outside-resize.log");
-  const std::string script = test::tempPath("view-outside-resize.sh");
-  std::ofstream(script) << "log=" << log << "\n"
-                        << "waitfor() { i=0; until grep -q \"$1\" $log; do i=$((i+1)); [ $i -gt 1200 ] && { echo \"timed out waiting for $1\"; return 1; }; sleep 0.05; done; }\n"
-                        << ARBOR_BINARY << " view --validation palm --size 320x240 --out " << dir << " > $log 2>&1 &\n"
-                        << "pid=$!\n"
-                        << "waitfor 'interactive on' || { kill $pid; exit 1; }\n"
-                        << "win=$(timeout 60 xdotool search --sync --name '^Arbor$' | head -1)\n"
-                        << "xdotool windowfocus --sync \"$win\"\n"
-                        << "xdotool key F12\n"
-                        << "waitfor 'frame-0001.png' || { kill $pid; exit 1; }\n"
-                        << "xdotool windowsize --sync \"$win\" 400 300 key F12\n"
-                        << "waitfor 'frame-0002.png' || { kill $pid; exit 1; }\n"
-                        << "xdotool key Escape\n"
-                        << "(sleep 120; kill $pid) > /dev/null 2>&1 &\n"
-                        << "watchdog=$!\n"
-                        << "wait $pid; status=$?\n"
-                        << "kill $watchdog 2>/dev/null\n"
-                        << "exit $status\n";
-  const Result r = runCommand(kXvfb + " sh " + script + " 2>&1");
-  std::ifstream in(log);
-  const std::string output((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  INFO(r.output << output);
+  const std::string dir = freshDir("view-outside-resize");
+  const Result r = runInWindow("view-outside-resize", "palm --size 320x240 --out " + dir,
+                               "xdotool windowsize --sync \"$win\" 400 300 key F12\n"
+                               "waitfor 'frame-0002.png' || { kill $pid; exit 1; }");
+  INFO(r.output);
   REQUIRE(r.exitCode == 0);
   CHECK(readPng((fs::path(dir) / "frame-0001.png").string()).width == 320);
   const Image resized = readPng((fs::path(dir) / "frame-0002.png").string());
