@@ -224,13 +224,25 @@ TEST_CASE("a file written atomically holds exactly what was streamed, with no bl
   CHECK(static_cast<std::size_t>(info.st_blocks) * 512 < expected.size() + (std::size_t{64} << 10));
 }
 
-TEST_CASE("a staged copy, committed, holds the source's bytes over the old file, and a missing source changes nothing", "[export][file]") {
+TEST_CASE("a staged copy, committed, holds the source's bytes over the old file, leaves the same bytes alone, and a missing source changes nothing", "[export][file]") {
   std::string bytes(std::size_t{3} << 20, '\0');  // past the sink's buffer, with every byte value
   for (std::size_t i = 0; i < bytes.size(); ++i) bytes[i] = static_cast<char>((i * 2654435761u) >> 13);
   const std::string from = writeTemp("copy-source.bin", bytes);
   const std::string to = writeTemp("copy-target.bin", "the old content, longer than nothing");
   stageCopy(from, to).commit();
   CHECK(readFile(to) == bytes);
+  // The same bytes again: the file is left as it is (the same inode, not renamed over).
+  struct stat before {}, after {};
+  REQUIRE(::stat(to.c_str(), &before) == 0);
+  stageCopy(from, to).commit();
+  REQUIRE(::stat(to.c_str(), &after) == 0);
+  CHECK(after.st_ino == before.st_ino);
+  CHECK(readFile(to) == bytes);
+  // As long, one byte different: copied.
+  std::string changed = bytes;
+  changed[bytes.size() / 2] = static_cast<char>(changed[bytes.size() / 2] ^ 1);
+  stageCopy(writeTemp("copy-changed.bin", changed), to).commit();
+  CHECK(readFile(to) == changed);
   stageCopy(writeTemp("copy-empty.bin", ""), to).commit();
   CHECK(readFile(to).empty());
   const std::string missing = test::tempPath("no-such-texture.png");

@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <cstring>
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <fstream>
 #include <mutex>
 #include <sstream>
@@ -52,7 +53,7 @@ class PartialFile {
  public:
   explicit PartialFile(const std::string& path) {
     std::call_once(handlersInstalled, installHandlers);
-    if (path.size() >= kPathBytes) return;  // too long to register: still written, only not cleaned on a signal
+    if (path.empty() || path.size() >= kPathBytes) return;  // none, or too long to register: not cleaned on a signal
     for (std::size_t i = 0; i < kSlots && slot_ < 0; ++i) {
       int expected = kFree;
       if (!partialState[i].compare_exchange_strong(expected, kClaimed)) continue;
@@ -197,7 +198,7 @@ struct StagedFile::State {
 
   State(std::string target, std::string partial) : path(std::move(target)), temporary(std::move(partial)), guard(temporary) {}
   ~State() {
-    if (!placed) std::remove(temporary.c_str());
+    if (!placed && !temporary.empty()) std::remove(temporary.c_str());
   }
   State(const State&) = delete;
   State& operator=(const State&) = delete;
@@ -210,6 +211,10 @@ StagedFile::~StagedFile() = default;
 
 void StagedFile::commit() {
   if (!state_ || state_->placed) throw std::logic_error("StagedFile::commit: nothing staged, or committed already");
+  if (state_->temporary.empty()) {  // the file holds these bytes already
+    state_->placed = true;
+    return;
+  }
   if (std::rename(state_->temporary.c_str(), state_->path.c_str()) != 0) {
     const std::string reason = std::strerror(errno);
     throw std::runtime_error(state_->path + ": cannot be written (" + reason + ")");  // the temporary goes with the state
@@ -229,13 +234,46 @@ StagedFile stageFile(const std::string& path, const std::function<void(std::ostr
 
 void writeFileAtomically(const std::string& path, const std::function<void(std::ostream&)>& write) { stageFile(path, write).commit(); }
 
+namespace {
+
+struct Closer {
+  int fd;
+  ~Closer() {
+    if (fd >= 0) ::close(fd);
+  }
+};
+
+// Whether the regular file `to` holds the bytes of the open file `source` (read back to its start).
+bool holdsSameBytes(int source, const std::string& to) {
+  const int target = ::open(to.c_str(), O_RDONLY | O_CLOEXEC);
+  const Closer closeTarget{target};
+  struct stat a {}, b {};
+  if (target < 0 || ::fstat(source, &a) != 0 || ::fstat(target, &b) != 0 || !S_ISREG(b.st_mode) || a.st_size != b.st_size) return false;
+  std::vector<char> x(std::size_t{1} << 16), y(x.size());
+  bool same = true;
+  for (;;) {
+    const ssize_t n = ::read(source, x.data(), x.size());
+    if (n <= 0) {
+      same = same && n == 0 && ::read(target, y.data(), 1) == 0;
+      break;
+    }
+    if (::read(target, y.data(), static_cast<std::size_t>(n)) != n || std::memcmp(x.data(), y.data(), static_cast<std::size_t>(n)) != 0) {
+      same = false;
+      break;
+    }
+  }
+  return ::lseek(source, 0, SEEK_SET) == 0 && same;
+}
+
+}  // namespace
+
 StagedFile stageCopy(const std::string& from, const std::string& to) {
   const int source = ::open(from.c_str(), O_RDONLY | O_CLOEXEC);
   if (source < 0) throw std::runtime_error(from + ": cannot be opened for reading");
-  struct Closer {
-    int fd;
-    ~Closer() { ::close(fd); }
-  } closeSource{source};
+  const Closer closeSource{source};
+  // Already there (an export again into the same folder): left alone, its time kept, so tools watching it do not
+  // reload it, and nothing is copied or renamed.
+  if (holdsSameBytes(source, to)) return StagedFile(std::make_unique<StagedFile::State>(to, std::string()));
   return stageFile(to, [&](std::ostream& out) {
     auto* sink = dynamic_cast<FileSink*>(out.rdbuf());
     if (sink && sink->copyFrom(source)) return;

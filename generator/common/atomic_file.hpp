@@ -37,7 +37,8 @@ class StagedFile {
 // writeFileAtomically, less the final rename.
 StagedFile stageFile(const std::string& path, const std::function<void(std::ostream&)>& write);
 // `from` copied to `to`'s temporary name, the bytes moved by the kernel (copy_file_range) where it can: an OBJ's
-// textures never pass through the process. Throws std::runtime_error naming the path.
+// textures never pass through the process. Where `to` holds `from`'s bytes already, nothing is copied and commit()
+// leaves it as it is (its modification time too). Throws std::runtime_error naming the path.
 StagedFile stageCopy(const std::string& from, const std::string& to);
 
 namespace detail {
