@@ -249,17 +249,17 @@ void Swapchain::acquireNext() {
   ahead_ = acquired == VK_SUCCESS || acquired == VK_SUBOPTIMAL_KHR;
 }
 
-void Swapchain::dropAcquiredAhead() {
+void Swapchain::dropAcquiredAhead() noexcept {
   if (!ahead_) return;
-  // A batch that waits on the acquire's semaphore leaves it unsignalled for the next acquire.
+  ahead_ = false;
+  // A batch that waits on the acquire's semaphore leaves it unsignalled for the next acquire. Not checked: the
+  // destructor calls this too, and a lost device shows in the calls that follow a recreate.
   const VkPipelineStageFlags stage = VK_PIPELINE_STAGE_ALL_COMMANDS_BIT;
   VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
   submit.waitSemaphoreCount = 1;
   submit.pWaitSemaphores = &imageAvailable_[frame_];
   submit.pWaitDstStageMask = &stage;
-  vk::check(vkQueueSubmit(context_.queue(), 1, &submit, VK_NULL_HANDLE), "vkQueueSubmit");
-  vk::check(vkQueueWaitIdle(context_.queue()), "vkQueueWaitIdle");
-  ahead_ = false;
+  if (vkQueueSubmit(context_.queue(), 1, &submit, VK_NULL_HANDLE) == VK_SUCCESS) vkQueueWaitIdle(context_.queue());
 }
 
 void Swapchain::waitIdle() const { vkDeviceWaitIdle(context_.device()); }

@@ -36,8 +36,6 @@ class Swapchain {
   // Ends the command buffer, submits and presents; with `wait`, also waits until the frame has completed (for
   // a screenshot or statistics). False: out of date or suboptimal (recreate).
   bool endFrame(bool wait);
-  // Whether endFrame acquires the next frame's image before presenting (software devices, below).
-  bool acquiresAhead() const { return acquireAhead_; }
   void waitIdle() const;
   Image screenshot() const;  // RGBA, row 0 at the top, of the last frame that recorded one
 
@@ -45,7 +43,7 @@ class Swapchain {
   void build(VkExtent2D size);
   void destroyImages();
   void acquireNext();
-  void dropAcquiredAhead();
+  void dropAcquiredAhead() noexcept;
 
   const vk::VulkanContext& context_;
   VkSurfaceKHR surface_;
