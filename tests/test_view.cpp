@@ -182,6 +182,24 @@ TEST_CASE("the viewer's panel answers the mouse: a click on 'leaves' hides them"
   CHECK(after * 20 < before);
 }
 
+TEST_CASE("the viewer turns the camera while the right button drags the mouse", "[view]") {
+  // The pointer comes from GLFW's events (window/window.cpp). It starts over the panel, which then has the mouse:
+  // moved right of it and shown in a screenshot (so a frame has seen it there), then the right button held and the
+  // pointer moved turn the camera, and the next screenshot shows another view.
+  const std::string dir = freshDir("view-mouse-look");
+  const Result r = runInWindow("view-mouse-look", "palm --size 800x600 --out " + dir,
+                               "xdotool mousemove --window \"$win\" --sync 700 300 key F12\n"
+                               "waitfor 'frame-0002.png' || { kill $pid; exit 1; }\n"
+                               "xdotool mousedown 3 mousemove_relative --sync 80 0 key F12\n"
+                               "waitfor 'frame-0003.png' || { kill $pid; exit 1; }\n"
+                               "xdotool mouseup 3");
+  INFO(r.output);
+  REQUIRE(r.exitCode == 0);
+  const ImageDifference turned = compareImages(readPng((fs::path(dir) / "frame-0002.png").string()),
+                                               readPng((fs::path(dir) / "frame-0003.png").string()), 16);
+  CHECK(turned.pixelsOverThreshold > 1000);
+}
+
 TEST_CASE("the viewer follows a resize made by the window system, not by its script", "[view]") {
   // The window keeps its size from GLFW's events (window/window.cpp): xdotool resizes it from outside, and the
   // next screenshot has the new size.
