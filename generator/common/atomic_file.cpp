@@ -16,6 +16,8 @@
 #include <unistd.h>
 #include <vector>
 
+#include "descriptor.hpp"
+
 namespace arbor {
 
 namespace {
@@ -236,17 +238,10 @@ void writeFileAtomically(const std::string& path, const std::function<void(std::
 
 namespace {
 
-struct Closer {
-  int fd;
-  ~Closer() {
-    if (fd >= 0) ::close(fd);
-  }
-};
-
 // Whether the regular file `to` holds the bytes of the open file `source` (read back to its start).
 bool holdsSameBytes(int source, const std::string& to) {
-  const int target = ::open(to.c_str(), O_RDONLY | O_CLOEXEC);
-  const Closer closeTarget{target};
+  const Descriptor closeTarget{::open(to.c_str(), O_RDONLY | O_CLOEXEC)};
+  const int target = closeTarget.fd;
   struct stat a {}, b {};
   if (target < 0 || ::fstat(source, &a) != 0 || ::fstat(target, &b) != 0 || !S_ISREG(b.st_mode) || a.st_size != b.st_size) return false;
   std::vector<char> x(std::size_t{1} << 16), y(x.size());
@@ -254,7 +249,7 @@ bool holdsSameBytes(int source, const std::string& to) {
   for (;;) {
     const ssize_t n = ::read(source, x.data(), x.size());
     if (n <= 0) {
-      same = same && n == 0 && ::read(target, y.data(), 1) == 0;
+      same = n == 0 && ::read(target, y.data(), 1) == 0;
       break;
     }
     if (::read(target, y.data(), static_cast<std::size_t>(n)) != n || std::memcmp(x.data(), y.data(), static_cast<std::size_t>(n)) != 0) {
@@ -270,7 +265,7 @@ bool holdsSameBytes(int source, const std::string& to) {
 StagedFile stageCopy(const std::string& from, const std::string& to) {
   const int source = ::open(from.c_str(), O_RDONLY | O_CLOEXEC);
   if (source < 0) throw std::runtime_error(from + ": cannot be opened for reading");
-  const Closer closeSource{source};
+  const Descriptor closeSource{source};
   // Already there (an export again into the same folder): left alone, its time kept, so tools watching it do not
   // reload it, and nothing is copied or renamed.
   if (holdsSameBytes(source, to)) return StagedFile(std::make_unique<StagedFile::State>(to, std::string()));

@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include "input_error.hpp"
+#include "descriptor.hpp"
 
 namespace arbor {
 
@@ -28,14 +29,6 @@ const char* kindOf(mode_t mode) {
   if (S_ISSOCK(mode)) return "a socket";
   return "not a regular file";
 }
-
-// Closes the descriptor on every way out.
-struct Descriptor {
-  int fd = -1;
-  ~Descriptor() {
-    if (fd >= 0) ::close(fd);
-  }
-};
 
 }  // namespace
 
