@@ -21,6 +21,7 @@
 #include <string_view>
 #include <vector>
 
+#include "common/huge_page_blocks.hpp"
 #include "export_checks.hpp"
 
 namespace arbor {
@@ -141,7 +142,7 @@ namespace {
 // Lines printed into a buffer of room for the longest ones, untouched past what was written (pages are touched only
 // as written).
 struct PrintedText {
-  std::unique_ptr<char[]> data;
+  HugePageBlock data;
   std::size_t size = 0;
 };
 
@@ -171,14 +172,17 @@ struct ObjPart {
 constexpr std::size_t kLineMax = 2 + 4 * (1 + 3 * 20 + 2) + 1;
 constexpr std::size_t kNumbersLineMax = 3 + 3 * (1 + 15) + 1;
 
-// Room for half a megabyte of a block's longest possible lines (10,700 number lines, 2,000 faces): buffers smaller
-// than a huge page, which is cleared whole when first touched however little of it is written.
-constexpr std::size_t kBlockBytes = std::size_t{512} << 10;
+// Room for half a megabyte of a block's longest possible lines (10,700 number lines, 2,000 faces), four blocks to a
+// huge page (a fresh 4 KiB page each cost a small file's printing more than its numbers).
+constexpr std::size_t kBlockBytes = kHugePageBlockBytes;
 constexpr std::size_t kBlockLines[2] = {kBlockBytes / kNumbersLineMax, kBlockBytes / kLineMax};  // numbers, faces
+// A section shorter than four full blocks is still split four ways (down to this many lines a block), so a small
+// file's printing is shared by every core as a large one's is.
+constexpr std::size_t kBlockLinesLeast = 1024;
 
 // Lines [begin, end) of a section into `out`, given room for a block's longest lines the first time.
 void printBlock(const LinePrinter& print, std::size_t begin, std::size_t end, PrintedText& out) {
-  if (!out.data) out.data.reset(new char[kBlockBytes]);
+  if (!out.data) out.data = hugePageBlock();
   char* p = out.data.get();
   print(p, begin, end);
   out.size = static_cast<std::size_t>(p - out.data.get());
@@ -199,7 +203,8 @@ void writeParts(const std::vector<ObjPart>& parts, std::ostream& stream) {
     for (int section = 0; section < 4; ++section) {
       if (const std::vector<PrintedText>* ahead = parts[part].printed[section])
         for (const PrintedText& text : *ahead) blocks.push_back({part, section, 0, 0, &text});
-      const std::size_t lines = kBlockLines[section == 3 ? 1 : 0];
+      const std::size_t left = parts[part].count[section] - parts[part].printedLines[section];
+      const std::size_t lines = std::clamp(left / 4 + 1, kBlockLinesLeast, kBlockLines[section == 3 ? 1 : 0]);
       for (std::size_t i = parts[part].printedLines[section]; i < parts[part].count[section]; i += lines)
         blocks.push_back({part, section, i, std::min(parts[part].count[section], i + lines)});
     }
