@@ -12,6 +12,8 @@ grep -q "presets in $prefix/share/arbor/presets" <<<"$list" || { echo "presets n
 grep -q "black-tupelo" <<<"$list" || { echo "no black-tupelo in the list"; exit 1; }
 "$arbor" generate palm --out "$prefix/palm.obj" --quiet
 [ -s "$prefix/palm.obj" ] || { echo "no OBJ written"; exit 1; }
+"$arbor" generate palm --subdivide 1 --out "$prefix/smooth.obj" --quiet  # OpenSubdiv's module from PREFIX/lib/arbor
+[ -s "$prefix/smooth.obj" ] || { echo "no subdivided OBJ written"; exit 1; }
 [ -s "$prefix/share/arbor/textures/bark_color.png" ] || { echo "textures not installed"; exit 1; }
 [ -s "$prefix/share/doc/arbor/README.md" ] || { echo "docs not installed"; exit 1; }
 set +e
@@ -20,4 +22,4 @@ code=$?
 set -e
 [ "$code" = 2 ] || { echo "a missing assets folder exited $code, not 2: $out"; exit 1; }
 grep -q "ARBOR_ASSETS" <<<"$out" || { echo "the error does not name ARBOR_ASSETS: $out"; exit 1; }
-echo "installed arbor finds its assets under $prefix/share/arbor; a missing folder exits 2"
+echo "installed arbor finds its assets under $prefix/share/arbor and its subdivision module under $prefix/lib/arbor; a missing assets folder exits 2"

@@ -449,6 +449,32 @@ TEST_CASE("subdivided export has four times the quads per level", "[cli][mesh]")
   CHECK(countFaces(arbor::readFile(fine)) == 16 * countFaces(arbor::readFile(coarse)));
 }
 
+TEST_CASE("arbor maps OpenSubdiv only for --subdivide, from its module, and says so when the module is missing", "[cli][mesh]") {
+  // The dynamic loader's own account of the files it opens.
+  auto opened = [](const std::string& arbor, const std::string& arguments) {
+    return arbor::test::runCommand("LD_DEBUG=files " + arbor + " " + arguments + " 2>&1");
+  };
+  const arbor::test::CommandResult plain = opened(ARBOR_BINARY, "generate palm --quiet --out " + arbor::test::tempPath("plain.obj"));
+  REQUIRE(plain.exitCode == 0);
+  CHECK(plain.output.find("libosdCPU") == std::string::npos);
+  CHECK(plain.output.find("libarbor_subdivide") == std::string::npos);
+  const arbor::test::CommandResult smooth = opened(ARBOR_BINARY, "generate palm --quiet --subdivide 1 --out " + arbor::test::tempPath("smooth.obj"));
+  REQUIRE(smooth.exitCode == 0);
+  CHECK(smooth.output.find("libarbor_subdivide.so") != std::string::npos);
+  CHECK(smooth.output.find("libosdCPU") != std::string::npos);
+  // A copy of the program alone: plain exports still work, --subdivide fails naming the module and where it looked.
+  const std::string alone = arbor::test::tempPath("alone");
+  fs::create_directories(alone);
+  fs::copy_file(ARBOR_BINARY, alone + "/arbor", fs::copy_options::overwrite_existing);
+  CHECK(run("generate palm --quiet --out " + alone + "/plain.obj").exitCode == 0);
+  const arbor::test::CommandResult missing =
+      arbor::test::runCommand(alone + "/arbor generate palm --quiet --subdivide 1 --out " + alone + "/smooth.obj 2>&1");
+  CHECK(missing.exitCode == 1);
+  CHECK(missing.output.find("libarbor_subdivide.so") != std::string::npos);
+  CHECK(missing.output.find(alone) != std::string::npos);
+  CHECK_FALSE(fs::exists(alone + "/smooth.obj"));
+}
+
 TEST_CASE("mesh options that make no sense for a skeleton are refused", "[cli]") {
   CHECK(run("generate palm --subdivide 1 --out " + arbor::test::tempPath("s.json")).exitCode == 2);
 }
