@@ -324,12 +324,11 @@ bool takeOutTwigs(TreeMesh& tree, const Skeleton& skeleton, const std::vector<in
   std::sort(twigs.begin(), twigs.end());
   twigs.erase(std::unique(twigs.begin(), twigs.end()), twigs.end());
   if (twigs.empty()) return true;
-  if (takeOut(tree, skeleton, twigs, true).twigs.empty()) return false;
-  computeNormals(tree.mesh);
-  return true;
+  return !takeOut(tree, skeleton, twigs, true).twigs.empty();
 }
 
 std::size_t fakeCrossingTwigs(TreeMesh& tree, const Skeleton& skeleton, CrossingsLeft* left) {
+  const bool normals = tree.mesh.normals.size() == tree.mesh.positions.size();  // the builder's mesh has none yet
   const std::vector<int> root = familyRoots(skeleton);
   // One search, for every stem that is a twig or becomes one once its twigs are taken out (or every stem, to say
   // what is left): the second pass only looks again at the pairs found.
@@ -366,7 +365,7 @@ std::size_t fakeCrossingTwigs(TreeMesh& tree, const Skeleton& skeleton, Crossing
     std::erase_if(left->necks, [](int s) { return s < 0; });
   }
   taken += takeOutNecksThroughParents(tree, skeleton, root, hits);
-  if (taken > 0) computeNormals(tree.mesh);
+  if (taken > 0 && normals) computeNormals(tree.mesh);
   return taken;
 }
 

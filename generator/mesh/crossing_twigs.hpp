@@ -20,7 +20,7 @@ namespace arbor {
 // one straight band that cut across it: the tamarack file's 238 pairs at seeds 1-3), adds its stems to
 // tree.fakedStems and returns how many twigs were taken out. A twig whose quads do not meet the rest of the mesh in
 // exactly one four-sided port stays. The faces that close the first pass's ports are searched for the second.
-// With `left`, every meshed stem's neck is searched, not only twigs', and `left` receives the mesh-made pairs no
+// Normals are computed again if the mesh had them. With `left`, every meshed stem's neck is searched, not only twigs', and `left` receives the mesh-made pairs no
 // twig could be taken out for.
 struct CrossingsLeft {
   std::size_t pairs = 0;   // mesh-made pairs left among those searched
@@ -30,6 +30,7 @@ std::size_t fakeCrossingTwigs(TreeMesh& tree, const Skeleton& skeleton, Crossing
 
 // Takes the listed stems (none a clone), each with its clones and descendants, out of the built mesh the same way,
 // adding them to tree.fakedStems; all or, where one does not meet the rest in one four-sided port, none (false).
+// Normals are left for the caller to compute once the mesh is final (the mesh builder takes twigs out twice).
 bool takeOutTwigs(TreeMesh& tree, const Skeleton& skeleton, const std::vector<int>& stems);
 
 }  // namespace arbor

@@ -2217,7 +2217,7 @@ TreeMesh buildWithTwigsFaked(const Skeleton& skeleton, const MeshOptions& option
     if (pass == kFarTwigPasses || far.empty()) {
       // Last, the twigs whose quads still cross another stem's where the skeletons do not meet.
       if (options.fakeDisplaced && options.fakeCrossingTwigs) fakeCrossingTwigs(out, skeleton, left);
-      // Once, on the mesh as it leaves (taking twigs out computes them for what is left).
+      // Once, on the mesh as it leaves, after every twig taken out (neither take-out computes them here).
       if (out.mesh.normals.size() != out.mesh.positions.size()) computeNormals(out.mesh);
       return out;
     }
