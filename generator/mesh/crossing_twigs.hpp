@@ -20,8 +20,8 @@ namespace arbor {
 // one straight band that cut across it: the tamarack file's 238 pairs at seeds 1-3), adds its stems to
 // tree.fakedStems and returns how many twigs were taken out. A twig whose quads do not meet the rest of the mesh in
 // exactly one four-sided port stays. The faces that close the first pass's ports are searched for the second.
-// Normals are computed again if the mesh had them. With `left`, every meshed stem's neck is searched, not only twigs', and `left` receives the mesh-made pairs no
-// twig could be taken out for.
+// Normals are computed again if the mesh had them. With `left`, every meshed stem's neck is searched, not only
+// twigs', and `left` receives the mesh-made pairs no twig could be taken out for.
 struct CrossingsLeft {
   std::size_t pairs = 0;   // mesh-made pairs left among those searched
   std::vector<int> necks;  // sorted: of each, the stem whose quad lies farther off its skeleton (its neck)
