@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <unistd.h>
 
+#include "files/asset_folder.hpp"
 #include "cli_main.hpp"
 
 int main(int argc, char** argv) {
@@ -14,9 +15,9 @@ int main(int argc, char** argv) {
                                              addGrowCommand,     addSpeciesCommand, addCheckCommand};
   // Its own commands and --version run here; anything else is arbor-engine's, given the same arguments.
   return runCli(argc, argv, kCommands, runGuarded, [argv] {
-    std::error_code ec;
-    const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
-    const std::string engine = ((ec ? std::filesystem::path(argv[0]) : self).parent_path() / "arbor-engine").string();
+    std::filesystem::path bin = arbor::programFolder();
+    if (bin.empty()) bin = std::filesystem::path(argv[0]).parent_path();
+    const std::string engine = (bin / "arbor-engine").string();
     ::execv(engine.c_str(), argv);
     std::fprintf(stderr, "arbor: error: %s: cannot be run (%s); it holds the commands that use Vulkan and windows, installed beside arbor\n",
                  engine.c_str(), std::strerror(errno));

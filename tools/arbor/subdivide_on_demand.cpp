@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "files/asset_folder.hpp"
 #include "export/subdivide.hpp"
 #include "subdivide_module.hpp"
 
@@ -19,8 +20,8 @@ namespace {
 const SubdivideModule& loadModule() {
   namespace fs = std::filesystem;
   std::error_code ec;
-  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-  const fs::path folder = ec ? fs::path(".") : exe.parent_path();
+  const fs::path bin = programFolder();
+  const fs::path folder = bin.empty() ? fs::path(".") : bin;
   std::string tried, why;
   for (const fs::path& file : {folder / kSubdivideModuleFile, folder.parent_path() / "lib" / "arbor" / kSubdivideModuleFile}) {
     tried += (tried.empty() ? "" : ", ") + file.string();

@@ -18,6 +18,12 @@ constexpr std::pair<const char*, const char*> kPresetFolders[] = {{"presets", ".
 
 }  // namespace
 
+fs::path programFolder() {
+  std::error_code ec;
+  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+  return ec ? fs::path() : exe.parent_path();
+}
+
 std::string assetDirectory() {
   if (const char* env = std::getenv("ARBOR_ASSETS"); env && *env) {
     if (!fs::is_directory(fs::path(env) / "presets")) throw InputError(env, "ARBOR_ASSETS", "has no presets/ folder; point it at Arbor's assets");
@@ -25,9 +31,8 @@ std::string assetDirectory() {
   }
   std::vector<fs::path> candidates;
   std::error_code ec;
-  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-  if (!ec) {
-    candidates = {exe.parent_path().parent_path() / "share" / "arbor", exe.parent_path() / "assets", exe.parent_path().parent_path() / "assets"};
+  if (const fs::path bin = programFolder(); !bin.empty()) {
+    candidates = {bin.parent_path() / "share" / "arbor", bin / "assets", bin.parent_path() / "assets"};
   }
   candidates.emplace_back(ARBOR_ASSET_DIR);
   std::string looked;

@@ -1,10 +1,15 @@
 #pragma once
 // Where Arbor's assets (presets, grammars, textures) are, for every program that needs them: the arbor command,
 // the viewer and the Python module. No Vulkan, no command-line library.
+#include <filesystem>
 #include <string>
 #include <vector>
 
 namespace arbor {
+
+// The folder of the running program (from /proc/self/exe), where its installed files are found from; empty when
+// the system does not say.
+std::filesystem::path programFolder();
 
 // $ARBOR_ASSETS first; then beside the running binary (installed: PREFIX/share/arbor; a copied tree: assets/);
 // then the source tree this was built from. Throws InputError when none has presets: never an empty list.
