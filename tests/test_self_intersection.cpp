@@ -707,6 +707,100 @@ TEST_CASE("where two stems' wood overlaps: near the crossing of their capsules, 
   CHECK(distanceToOverlap(a, d, Vec3(0.9, 0.04, 0.6), 1.0) > 2.5);  // beside the overlap, not on it
 }
 
+namespace {
+
+// Points at which the mesher could have handed a built mesh over part by part (PairsToMendSearch::advance's
+// promise): every stem with a quad or cross section before the point has all of them before it, on vertices before
+// it, and nothing after it uses an earlier vertex but quads (ports in a parent). At most `most`, spread evenly.
+std::vector<MeshProgress> settlePoints(const TreeMesh& tree, std::size_t most) {
+  int stems = 0;
+  for (int s : tree.quadStem) stems = std::max(stems, s + 1);
+  for (const MeshRing& r : tree.rings) stems = std::max(stems, r.stem + 1);
+  const auto n = static_cast<std::size_t>(stems);
+  std::vector<std::size_t> firstQuad(n, SIZE_MAX), lastQuad(n, 0), firstRing(n, SIZE_MAX), lastRing(n, 0);
+  for (std::size_t f = 0; f < tree.quadStem.size(); ++f) {
+    if (tree.quadStem[f] < 0) continue;
+    const auto s = static_cast<std::size_t>(tree.quadStem[f]);
+    firstQuad[s] = std::min(firstQuad[s], f);
+    lastQuad[s] = f;
+  }
+  for (std::size_t r = 0; r < tree.rings.size(); ++r) {
+    if (tree.rings[r].stem < 0) continue;
+    const auto s = static_cast<std::size_t>(tree.rings[r].stem);
+    firstRing[s] = std::min(firstRing[s], r);
+    lastRing[s] = r;
+  }
+  std::vector<MeshProgress> points;
+  for (std::size_t q = 1; q < tree.quadStem.size(); ++q) {
+    if (tree.quadStem[q] == tree.quadStem[q - 1] || tree.quadStem[q] < 0) continue;
+    // The rings before the point: those of stems whose quads all lie before it.
+    std::size_t r = 0;
+    while (r < tree.rings.size() && tree.rings[r].stem >= 0 && firstQuad[static_cast<std::size_t>(tree.rings[r].stem)] < q) ++r;
+    bool split = false;
+    for (std::size_t s = 0; s < n && !split; ++s) {
+      const bool quadsBefore = firstQuad[s] < q, quadsAfter = firstQuad[s] != SIZE_MAX && lastQuad[s] >= q;
+      const bool ringsBefore = firstRing[s] < r, ringsAfter = firstRing[s] != SIZE_MAX && lastRing[s] >= r;
+      split = ((quadsBefore || ringsBefore) && (quadsAfter || ringsAfter));
+    }
+    if (split) continue;
+    std::uint32_t v = 0;  // the vertices before the point: all those of its quads and rings
+    for (std::size_t f = 0; f < q; ++f)
+      for (std::uint32_t x : tree.mesh.quads[f]) v = std::max(v, x + 1);
+    bool late = false;  // a later cross section on an earlier vertex
+    for (std::size_t k = r; k < tree.rings.size() && !late; ++k)
+      for (std::uint32_t x : tree.rings[k].vertices) late = late || x < v;
+    if (!late) points.push_back(MeshProgress{q, v, r});
+  }
+  std::vector<MeshProgress> spread;
+  for (std::size_t k = 0; k < most && !points.empty(); ++k) spread.push_back(points[k * points.size() / most]);
+  spread.erase(std::unique(spread.begin(), spread.end(), [](const MeshProgress& a, const MeshProgress& b) { return a.quads == b.quads; }), spread.end());
+  return spread;
+}
+
+bool samePairs(const std::vector<QuadPairHit>& x, const std::vector<QuadPairHit>& y) {
+  if (x.size() != y.size()) return false;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    if (x[i].a != y[i].a || x[i].b != y[i].b || x[i].origin != y[i].origin || x[i].throughParent != y[i].throughParent ||
+        x[i].point != y[i].point || x[i].reachA != y[i].reachA || x[i].reachB != y[i].reachB)
+      return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+TEST_CASE("searched part by part as the mesher settles them, the pairs to mend are those of one search of the whole mesh", "[mesh][self-intersection]") {
+  // Trees whose meshes, left without the crossing-twig pass, have pairs to mend (mesh-made ones and necks).
+  struct Case {
+    const char* name;
+    std::uint64_t seed;
+  };
+  const Case tree = GENERATE(values<Case>({{"ca-black-oak", 1}, {"weeping-willow", 4}, {"palm", 2}}));
+  INFO(tree.name << " at seed " << tree.seed);
+  GrowthOptions o;
+  o.seed = tree.seed;
+  const Skeleton skeleton = generateSkeleton(test::loadPreset(tree.name), o);
+  MeshOptions keep;
+  keep.fakeCrossingTwigs = false;
+  const TreeMesh mesh = buildTreeMesh(skeleton, keep);
+  const std::vector<QuadPairHit> whole = pairsToMendOf(mesh, skeleton, std::vector<bool>(skeleton.stems.size(), true));
+  REQUIRE(!whole.empty());
+  const std::vector<MeshProgress> points = settlePoints(mesh, 12);
+  INFO(points.size() << " points");
+  REQUIRE(points.size() >= 3);
+  PairsToMendSearch parts;
+  for (const MeshProgress& p : points) parts.advance(mesh, skeleton, p);
+  CHECK(samePairs(parts.finish(mesh, skeleton), whole));
+  CHECK(parts.searchedInParts());
+  // A part that cuts a stem's cross sections in two breaks the promise: the whole mesh is searched after all.
+  PairsToMendSearch broken;
+  const MeshProgress& mid = points[points.size() / 2];
+  broken.advance(mesh, skeleton, MeshProgress{mid.quads, mid.vertices, mid.rings + 1});
+  broken.advance(mesh, skeleton, points.back());
+  CHECK(samePairs(broken.finish(mesh, skeleton), whole));
+  CHECK_FALSE(broken.searchedInParts());
+}
+
 TEST_CASE("the BVH finds the same pairs as testing every pair, on a preset's mesh", "[mesh][self-intersection]") {
   const TreeMesh tree = test::meshOf("palm", 1);
   const auto fast = findIntersectingQuads(tree.mesh);

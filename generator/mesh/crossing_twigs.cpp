@@ -327,7 +327,7 @@ bool takeOutTwigs(TreeMesh& tree, const Skeleton& skeleton, const std::vector<in
   return !takeOut(tree, skeleton, twigs, true).twigs.empty();
 }
 
-std::size_t fakeCrossingTwigs(TreeMesh& tree, const Skeleton& skeleton, CrossingsLeft* left) {
+std::size_t fakeCrossingTwigs(TreeMesh& tree, const Skeleton& skeleton, CrossingsLeft* left, PairsToMendSearch* begun) {
   const bool normals = tree.mesh.normals.size() == tree.mesh.positions.size();  // the builder's mesh has none yet
   const std::vector<int> root = familyRoots(skeleton);
   // One search, for every stem that is a twig or becomes one once its twigs are taken out (or every stem, to say
@@ -335,7 +335,7 @@ std::size_t fakeCrossingTwigs(TreeMesh& tree, const Skeleton& skeleton, Crossing
   const std::vector<int> deepTwigs = twigsOf(tree, skeleton, root, kMaxHeight + 1);
   std::vector<bool> deep(deepTwigs.size());
   for (std::size_t i = 0; i < deep.size(); ++i) deep[i] = left || deepTwigs[i] >= 0;
-  std::vector<QuadPairHit> hits = pairsToMendOf(tree, skeleton, deep);
+  std::vector<QuadPairHit> hits = left && begun ? begun->finish(tree, skeleton) : pairsToMendOf(tree, skeleton, deep);
   auto meshMade = [](const QuadPairHit& h) { return h.origin == PairOrigin::Mesh; };
   std::size_t taken = 0;
   for (int pass = 0; pass < kPasses && std::any_of(hits.begin(), hits.end(), meshMade); ++pass) {

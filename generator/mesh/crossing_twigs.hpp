@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "growth/skeleton.hpp"
+#include "self_intersection.hpp"
 #include "tree_mesh.hpp"
 
 namespace arbor {
@@ -21,12 +22,13 @@ namespace arbor {
 // tree.fakedStems and returns how many twigs were taken out. A twig whose quads do not meet the rest of the mesh in
 // exactly one four-sided port stays. The faces that close the first pass's ports are searched for the second.
 // Normals are computed again if the mesh had them. With `left`, every meshed stem's neck is searched, not only
-// twigs', and `left` receives the mesh-made pairs no twig could be taken out for.
+// twigs', and `left` receives the mesh-made pairs no twig could be taken out for; `begun`, with `left`: that search,
+// begun while the mesh was built.
 struct CrossingsLeft {
   std::size_t pairs = 0;   // mesh-made pairs left among those searched
   std::vector<int> necks;  // sorted: of each, the stem whose quad lies farther off its skeleton (its neck)
 };
-std::size_t fakeCrossingTwigs(TreeMesh& tree, const Skeleton& skeleton, CrossingsLeft* left = nullptr);
+std::size_t fakeCrossingTwigs(TreeMesh& tree, const Skeleton& skeleton, CrossingsLeft* left = nullptr, PairsToMendSearch* begun = nullptr);
 
 // Takes the listed stems (none a clone), each with its clones and descendants, out of the built mesh the same way,
 // adding them to tree.fakedStems; all or, where one does not meet the rest in one four-sided port, none (false).

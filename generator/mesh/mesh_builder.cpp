@@ -17,6 +17,7 @@
 #include "common/text_util.hpp"
 #include "connection.hpp"
 #include "crossing_twigs.hpp"
+#include "search_beside_builder.hpp"
 #include "cross_section.hpp"
 #include "edge_plane.hpp"
 #include "face_grid.hpp"
@@ -141,6 +142,10 @@ class Builder {
   Builder(const Skeleton& s, const MeshOptions& o, TreeMesh& out, const std::vector<int>& fake, const CollarHints& collars)
       : sk_(s), opt_(o), out_(out), fake_(fake), collars_(collars) {}
 
+  // The crossing-twig search, told as each trunk and each of its children is built whole (with all that grows from
+  // it), and stopped before a vector it reads would move.
+  void searchBeside(SearchBesideBuilder* beside) { beside_ = beside; }
+
   void run() {
     const std::size_t vertices = out_.mesh.positions.capacity();
     uvwSum_.reserve(vertices);
@@ -250,6 +255,20 @@ class Builder {
     FaceGrid grid;
   };
   std::vector<std::unique_ptr<ParentGrid>> grids_;
+  SearchBesideBuilder* beside_ = nullptr;
+  int depth_ = 0;  // of the stem being built: 0 a trunk, 1 a trunk's child
+
+  void settle() {
+    if (beside_) beside_->settled(MeshProgress{out_.mesh.quads.size(), out_.mesh.positions.size(), out_.rings.size()});
+  }
+  // Before a push: a vector the search beside reads may not move while it reads it.
+  template <class Values>
+  void beforePush(const Values& values) {
+    if (beside_ && values.size() == values.capacity()) {
+      beside_->stop();
+      beside_ = nullptr;
+    }
+  }
 
   // Stubs (shorter than a tube can be, hair-thin, or ending inside their parent) are drawn as fake branches.
   bool meshed(int stem) const {
@@ -271,6 +290,8 @@ class Builder {
 
   std::uint32_t addVertex(const Vec3& p, double radius, int level, const Vec3& tangent) {
     QuadMesh& m = out_.mesh;
+    beforePush(m.positions);
+    beforePush(m.radius);
     m.positions.emplace_back(p);
     m.tangents.emplace_back(tangent);
     m.radius.push_back(static_cast<float>(radius));
@@ -309,12 +330,15 @@ class Builder {
       r.v[static_cast<std::size_t>(k)] = addVertex(center + offsets[static_cast<std::size_t>(k)], radius, level, frame.T);
       addUvw(r.v[static_cast<std::size_t>(k)], k, tex);
     }
+    beforePush(out_.rings);
     out_.rings.push_back(MeshRing{stem, r.v, center, tex, radius, arc});
     return r;
   }
 
   void addQuad(std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d) {
     if (out_.mesh.quads.size() >= opt_.maxQuads) throw LimitError(tooManyQuads(0.0));
+    beforePush(out_.mesh.quads);
+    beforePush(out_.quadStem);
     out_.mesh.quads.push_back({a, b, c, d});
     out_.quadStem.push_back(currentStem_);
   }
@@ -420,7 +444,11 @@ class Builder {
     currentStart_ = start;
     const std::size_t begin = out_.mesh.quads.size();
     buildStemFaces(stem, start);
+    if (depth_ == 0) settle();
+    ++depth_;
     buildChildren(children, begin);
+    --depth_;
+    if (depth_ <= 1) settle();
     currentStem_ = outer;
     currentStart_ = outerStart;
     deferred_ = outerDeferred;
@@ -733,6 +761,7 @@ class Builder {
       uvwCount_[inner[k]] = 1;
     }
     // The inset is the child's first cross section (off its skeleton): its connection, where the joint checks look.
+    beforePush(out_.rings);
     out_.rings.push_back(MeshRing{currentStem_, inner, 0.25 * (corners[0] + corners[1] + corners[2] + corners[3]), start.tex,
                                   opt_.insetCollar * poly.radius(0.0), -1.0, true});
     double offPlane = 0.0;
@@ -1813,6 +1842,7 @@ class Builder {
       r.v[k] = addVertex(glm::mix(position(a.v[k]), position(b.v[k]), t) + shift, r.radius, level, r.frame.T);
       addUvw(r.v[k], static_cast<int>(k), r.tex);
     }
+    beforePush(out_.rings);
     out_.rings.push_back(MeshRing{stem, r.v, r.center, r.tex, r.radius, -1.0, false, true});
     return r;
   }
@@ -2180,8 +2210,9 @@ class Builder {
   }
 };
 
+// `search`: the crossing-twig search, begun beside the mesher.
 TreeMesh buildOnce(const Skeleton& skeleton, const MeshOptions& options, const std::vector<int>& fake, const CollarHints& collars,
-                   std::vector<int>* farTwigs) {
+                   std::vector<int>* farTwigs, PairsToMendSearch* search) {
   TreeMesh out;
   // About five quads (and as many vertices) per skeleton node; growing these vectors would cost page faults.
   const std::size_t vertices = std::min(skeleton.nodes.size() * 6, options.maxQuads + 8);
@@ -2193,7 +2224,13 @@ TreeMesh buildOnce(const Skeleton& skeleton, const MeshOptions& options, const s
   out.quadStem.reserve(vertices);
   out.rings.reserve(vertices / 4);
   Builder builder(skeleton, options, out, fake, collars);
+  std::optional<SearchBesideBuilder> beside;
+  if (search) {
+    beside.emplace(out, skeleton, *search);
+    builder.searchBeside(&*beside);
+  }
   builder.run();
+  if (beside) beside->stop();
   if (farTwigs) *farTwigs = builder.farTwigs();
   // Degenerate geometry must never leave here as NaN vertices (exports and the GPU would take them silently).
   for (const glm::vec3& p : out.mesh.positions) {
@@ -2212,11 +2249,18 @@ TreeMesh buildOnce(const Skeleton& skeleton, const MeshOptions& options, const s
 TreeMesh buildWithTwigsFaked(const Skeleton& skeleton, const MeshOptions& options, const CollarHints& collars, CrossingsLeft* left) {
   std::vector<int> fake, far;
   for (int pass = 0;; ++pass) {
-    TreeMesh out = buildOnce(skeleton, options, fake, collars, pass < kFarTwigPasses ? &far : nullptr);
-    if (pass >= 1 && !far.empty() && takeOutTwigs(out, skeleton, far)) far.clear();
+    // Searching every stem (as when what is left is asked for), the crossing-twig search begins beside the mesher.
+    const bool crossing = options.fakeDisplaced && options.fakeCrossingTwigs;
+    PairsToMendSearch search;
+    TreeMesh out = buildOnce(skeleton, options, fake, collars, pass < kFarTwigPasses ? &far : nullptr, crossing && left ? &search : nullptr);
+    bool changed = false;  // since the search beside began
+    if (pass >= 1 && !far.empty() && takeOutTwigs(out, skeleton, far)) {
+      far.clear();
+      changed = true;
+    }
     if (pass == kFarTwigPasses || far.empty()) {
       // Last, the twigs whose quads still cross another stem's where the skeletons do not meet.
-      if (options.fakeDisplaced && options.fakeCrossingTwigs) fakeCrossingTwigs(out, skeleton, left);
+      if (crossing) fakeCrossingTwigs(out, skeleton, left, left && !changed ? &search : nullptr);
       // Once, on the mesh as it leaves, after every twig taken out (neither take-out computes them here).
       if (out.mesh.normals.size() != out.mesh.positions.size()) computeNormals(out.mesh);
       return out;

@@ -78,6 +78,35 @@ void forEachOverlappingPair(const QuadBvh& bvh, NodePair task, Visit&& visit) {
   }
 }
 
+// Calls visit(i, j) once for every quad i of `a` and quad j of `b` whose boxes overlap (two trees, one against the
+// other: a mesh's part searched against the parts before it).
+template <class Visit>
+void forEachOverlappingPair(const QuadBvh& a, const QuadBvh& b, Visit&& visit) {
+  if (a.nodes.empty() || b.nodes.empty()) return;
+  std::vector<NodePair> stack{{0, 0}};
+  while (!stack.empty()) {
+    const auto [x, y] = stack.back();
+    stack.pop_back();
+    const QuadBvh::Node& nx = a.nodes[x];
+    const QuadBvh::Node& ny = b.nodes[y];
+    if (!nx.box.overlaps(ny.box)) continue;
+    if (nx.count > 0 && ny.count > 0) {
+      for (std::uint32_t i = nx.first; i < nx.first + nx.count; ++i)
+        for (std::uint32_t j = ny.first; j < ny.first + ny.count; ++j)
+          if (a.itemBoxes[i].overlaps(b.itemBoxes[j])) visit(a.items[i], b.items[j]);
+      continue;
+    }
+    const glm::vec3 ex = nx.box.hi - nx.box.lo, ey = ny.box.hi - ny.box.lo;
+    if (ny.count > 0 || (nx.count == 0 && ex.x + ex.y + ex.z >= ey.x + ey.y + ey.z)) {
+      stack.push_back({nx.first, y});
+      stack.push_back({nx.first + 1, y});
+    } else {
+      stack.push_back({x, ny.first});
+      stack.push_back({x, ny.first + 1});
+    }
+  }
+}
+
 // Calls visit(i) for every quad i whose box overlaps `query`.
 template <class Visit>
 void forEachOverlap(const QuadBvh& bvh, const QuadBox& query, Visit&& visit) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <cstdint>
 #include <optional>
 #include <thread>
 #include <tuple>
@@ -67,8 +68,8 @@ void testPair(const QuadMesh& mesh, std::uint32_t a, std::uint32_t b, std::vecto
 
 // The radius the mesher built a quad for (its corners' radius attribute): tips keep a third of the ring
 // before where the skeleton's radius runs out to 0.
-double builtRadius(const QuadMesh& mesh, std::uint32_t f) {
-  if (mesh.radius.size() != mesh.positions.size()) return 0.0;
+double builtRadius(const QuadMesh& mesh, std::uint32_t f, bool perVertexRadius) {
+  if (!perVertexRadius) return 0.0;
   double r = 0.0;
   for (std::uint32_t v : mesh.quads[f]) r = std::max(r, static_cast<double>(mesh.radius[v]));
   return r;
@@ -93,7 +94,8 @@ StemRelation relationOf(const Skeleton& skeleton, int a, int b) {
 }
 
 // Whether a pair is a child's neck (or first band) through its own parent: the child's quad is on `neck`.
-bool neckThroughParent(const Skeleton& skeleton, const std::vector<bool>& neck, const QuadPairHit& h) {
+template <class Flags>
+bool neckThroughParent(const Skeleton& skeleton, const Flags& neck, const QuadPairHit& h) {
   if (h.relation != StemRelation::ParentChild) return false;
   return neck[childIsA(h, skeleton) ? h.a : h.b];
 }
@@ -142,17 +144,22 @@ const typename Map::mapped_type& cached(Map& map, std::uint64_t key, Make&& make
 // check of a few stems' quads then costs what those stems do, not the whole tree's.
 class PairClassifier {
  public:
+  // The mesh's sizes are read here, once: a mesh still being built (PairsToMendSearch) grows while it is classified.
   PairClassifier(const TreeMesh& tree, const Skeleton& skeleton)
-      : tree_(tree), skeleton_(skeleton), necks_(skeleton.stems.size()), wood_(skeleton.stems.size()) {}
+      : tree_(tree), skeleton_(skeleton), stemsKnown_(tree.quadStem.size()),
+        perVertexRadius_(tree.mesh.radius.size() == tree.mesh.positions.size()), necks_(skeleton.stems.size()), wood_(skeleton.stems.size()) {}
+  // A mesh being built: per-vertex radii, and stems known for the quads searched.
+  PairClassifier(const TreeMesh& tree, const Skeleton& skeleton, std::size_t quads)
+      : tree_(tree), skeleton_(skeleton), stemsKnown_(quads), perVertexRadius_(true), necks_(skeleton.stems.size()), wood_(skeleton.stems.size()) {}
 
   void classify(QuadPairHit& h) {
-    h.stemA = h.a < tree_.quadStem.size() ? tree_.quadStem[h.a] : -1;
-    h.stemB = h.b < tree_.quadStem.size() ? tree_.quadStem[h.b] : -1;
+    h.stemA = h.a < stemsKnown_ ? tree_.quadStem[h.a] : -1;
+    h.stemB = h.b < stemsKnown_ ? tree_.quadStem[h.b] : -1;
     h.relation = relationOf(skeleton_, h.stemA, h.stemB);
     const bool candidate = h.contact != QuadContact::Edge && h.relation != StemRelation::Hub && h.relation != StemRelation::Same;
     if (h.relation != StemRelation::Hub) {
-      h.reachA = stemReach(capsules(h.stemA, h.stemB, h.stemA), h.point, builtRadius(tree_.mesh, h.a));
-      h.reachB = stemReach(capsules(h.stemA, h.stemB, h.stemB), h.point, builtRadius(tree_.mesh, h.b));
+      h.reachA = stemReach(capsules(h.stemA, h.stemB, h.stemA), h.point, builtRadius(tree_.mesh, h.a, perVertexRadius_));
+      h.reachB = stemReach(capsules(h.stemA, h.stemB, h.stemB), h.point, builtRadius(tree_.mesh, h.b, perVertexRadius_));
     }
     bool meets = candidate && woodMeets([&]() -> const auto& { return overlaps(h.stemA, h.stemB); }, h.point, h.reachA, h.reachB);
     // A child's collar lies on its parent's surface (a clone's on its source's end): a stem crossing that wood crosses the collar too.
@@ -163,7 +170,7 @@ class PairClassifier {
         const bool kin = cloneKin(skeleton_, x, py);
         // x may be py's own parent: py's surface, and the collar on it, cross x where py's wood past its neck does.
         const bool grandparent = relationOf(skeleton_, x, py) == StemRelation::ParentChild && skeleton_.stems[static_cast<std::size_t>(py)].parentStem == x;
-        if (kin || grandparent || unrelatedTo(skeleton_, x, py)) meets = meets || woodMeetsAt(x, py, kin, h.point, builtRadius(tree_.mesh, fx));
+        if (kin || grandparent || unrelatedTo(skeleton_, x, py)) meets = meets || woodMeetsAt(x, py, kin, h.point, builtRadius(tree_.mesh, fx, perVertexRadius_));
       }
     }
     // Both quads stand for their parents' surfaces where the two parents' wood overlaps (two clones grown into each
@@ -212,6 +219,8 @@ class PairClassifier {
 
   const TreeMesh& tree_;
   const Skeleton& skeleton_;
+  std::size_t stemsKnown_;  // quads with a stem in tree_.quadStem
+  bool perVertexRadius_;
   std::vector<std::optional<std::vector<Capsule>>> necks_, wood_;
   std::unordered_map<std::uint64_t, std::vector<WoodOverlap>> overlaps_, kinOverlaps_;
   std::unordered_map<std::uint64_t, std::vector<Capsule>> kin_;
@@ -246,6 +255,15 @@ std::vector<bool> quadsOnOwnRings(const TreeMesh& tree, const std::vector<int>& 
   return on;
 }
 
+// Whether a stem's cross section, met in build order, is one of its neck's (pastNeck: per stem, whether one on its
+// skeleton came before).
+bool neckRing(const MeshRing& ring, std::vector<bool>& pastNeck) {
+  const auto stem = static_cast<std::size_t>(ring.stem);
+  if (pastNeck.size() <= stem) pastNeck.resize(stem + 1, false);
+  if (ring.arc >= 0.0) pastNeck[stem] = true;
+  return !pastNeck[stem] || ring.alongNeck;
+}
+
 // Per quad, whether it lies in its own stem's neck or first band: a corner on one of the stem's cross sections
 // before its first on the skeleton (an inset or a collar), or on a cross section of its neck's slabs (neck ports,
 // made after the neck's far end: the tupelo file's 6 mesh-made pairs at seed 3 were a branch's neck slab through a
@@ -254,33 +272,10 @@ std::vector<bool> neckQuads(const TreeMesh& tree) {
   std::vector<int> neckOf(tree.mesh.vertexCount(), -1);
   std::vector<bool> pastNeck;
   for (const MeshRing& ring : tree.rings) {
-    if (ring.stem < 0) continue;
-    const auto stem = static_cast<std::size_t>(ring.stem);
-    if (pastNeck.size() <= stem) pastNeck.resize(stem + 1, false);
-    if (ring.arc >= 0.0) pastNeck[stem] = true;
-    if (pastNeck[stem] && !ring.alongNeck) continue;
+    if (ring.stem < 0 || !neckRing(ring, pastNeck)) continue;
     for (std::uint32_t v : ring.vertices) neckOf[v] = ring.stem;
   }
   return quadsOnOwnRings(tree, neckOf);
-}
-
-// Per quad, whether it lies on the last cross section (the last band or the tip's cap) of a stem that bears
-// children: such a tip reaches past the skeleton's end among the twigs around it.
-std::vector<bool> bearingTipQuads(const TreeMesh& tree, const Skeleton& skeleton) {
-  std::vector<bool> bearing(skeleton.stems.size(), false);
-  for (const SkeletonStem& st : skeleton.stems) {
-    if (st.parentStem >= 0 && static_cast<std::size_t>(st.parentStem) < bearing.size()) bearing[static_cast<std::size_t>(st.parentStem)] = true;
-  }
-  std::vector<const MeshRing*> last(skeleton.stems.size(), nullptr);
-  for (const MeshRing& ring : tree.rings) {
-    if (ring.stem >= 0 && static_cast<std::size_t>(ring.stem) < last.size() && ring.arc >= 0.0) last[static_cast<std::size_t>(ring.stem)] = &ring;
-  }
-  std::vector<int> tipOf(tree.mesh.vertexCount(), -1);
-  for (std::size_t s = 0; s < last.size(); ++s) {
-    if (!last[s] || !bearing[s]) continue;
-    for (std::uint32_t v : last[s]->vertices) tipOf[v] = static_cast<int>(s);
-  }
-  return quadsOnOwnRings(tree, tipOf);
 }
 
 SelfIntersectionReport summarise(std::vector<QuadPairHit> hits, std::size_t quads, bool classified) {
@@ -381,73 +376,159 @@ SelfIntersectionReport checkSelfIntersections(const TreeMesh& tree, const Skelet
   return r;
 }
 
-std::vector<QuadPairHit> pairsToMendOf(const TreeMesh& tree, const Skeleton& skeleton, const std::vector<bool>& stems) {
-  const QuadMesh& mesh = tree.mesh;
-  const auto n = static_cast<std::uint32_t>(std::min(mesh.quads.size(), tree.quadStem.size()));
-  auto marked = [&](int stem) { return stem >= 0 && static_cast<std::size_t>(stem) < stems.size() && stems[static_cast<std::size_t>(stem)]; };
-  // Runs of one stem's consecutive quads, all in its neck (and first band) or none: a BVH over them is a tenth the
-  // size of one over the quads, and pairs within a stem (most overlapping boxes: neighbours) or away from any neck
-  // are skipped whole.
+// ---- the pairs to mend, searched part by part ----
+
+struct PairsToMendSearch::State {
+  // One stem's consecutive quads, all in its neck (and first band) or none, all on a bearing tip or none: a BVH over
+  // them is a tenth the size of one over the quads, and pairs within a stem (most overlapping boxes: neighbours) or
+  // away from any neck are skipped whole.
   struct Run {
     std::uint32_t begin = 0, end = 0;
     int stem = -1;
     bool neck = false, tip = false;
   };
-  const std::vector<bool> neck = neckQuads(tree), tip = bearingTipQuads(tree, skeleton);
-  std::vector<QuadBox> quadBoxes(n);
+  // Runs settled together, with a hierarchy over their boxes (items counted from firstRun).
+  struct Part {
+    std::uint32_t firstRun = 0, endRun = 0;
+    QuadBvh bvh;
+    QuadBox box;
+  };
+  // A pair kept before every part was in, with the two runs it was found between.
+  struct Found {
+    QuadPairHit hit;
+    std::uint32_t x = 0, y = 0;
+  };
+  std::vector<bool> stems;  // flagged: pairs with one of these are searched
+  bool whole = true;        // every part kept advance()'s promise
+  MeshProgress done;
+  std::vector<int> neckOf, tipOf;  // per vertex: the stem whose neck (or bearing tip) cross section it is on, or -1
+  std::vector<bool> pastNeck;      // per stem: a cross section on its skeleton seen
+  std::vector<int> ringPart;       // per stem: the part its cross sections came in, or -1
+  std::vector<bool> bearing;       // per stem: it has children
+  std::vector<QuadBox> quadBoxes;
+  std::vector<std::uint8_t> neck, tip;  // per quad: in its stem's neck (or first band), on a bearing tip
   std::vector<Run> runs;
   std::vector<QuadBox> runBoxes;
-  for (std::uint32_t f = 0; f < n; ++f) {
-    quadBoxes[f] = boxOf(mesh, f);
-    const int stem = tree.quadStem[f];
-    if (runs.empty() || runs.back().stem != stem || runs.back().neck != neck[f] || runs.back().tip != tip[f] ||
-        runs.back().end - runs.back().begin == kRunQuads) {
-      runs.push_back(Run{f, f, stem, neck[f], tip[f]});
-      runBoxes.push_back(quadBoxes[f]);
+  std::uint32_t closedRuns = 0;  // runs that no later quad extends, all in parts
+  std::vector<Part> parts;
+  std::size_t partsAdvanced = 0;  // of those, searched by advance()
+  std::vector<std::uint32_t> met;  // per stem: how many runs of others its neck (or tip) meets
+  std::vector<Found> found;
+
+  State(const Skeleton& skeleton, std::vector<bool> flagged)
+      : stems(std::move(flagged)), pastNeck(skeleton.stems.size(), false), ringPart(skeleton.stems.size(), -1),
+        bearing(skeleton.stems.size(), false), met(skeleton.stems.size(), 0) {
+    for (const SkeletonStem& st : skeleton.stems) {
+      if (st.parentStem >= 0 && static_cast<std::size_t>(st.parentStem) < bearing.size()) bearing[static_cast<std::size_t>(st.parentStem)] = true;
     }
-    runs.back().end = f + 1;
-    runBoxes.back().lo = glm::min(runBoxes.back().lo, quadBoxes[f].lo);
-    runBoxes.back().hi = glm::max(runBoxes.back().hi, quadBoxes[f].hi);
   }
-  if (runs.empty()) return {};
+
+  bool marked(int stem) const { return stem >= 0 && static_cast<std::size_t>(stem) < stems.size() && stems[static_cast<std::size_t>(stem)]; }
+  bool crowded(int stem) const { return stem >= 0 && met[static_cast<std::size_t>(stem)] > kCrowdedNeck; }
+  // A run's neck and tip, or none once its stem is crowded (`crowding`): a thicket the skeleton made is searched no
+  // more, which keeps the search linear in the stems where it would grow with their square.
+  bool neckLive(const Run& r, bool crowding) const { return r.neck && !(crowding && crowded(r.stem)); }
+  bool tipLive(const Run& r, bool crowding) const { return r.tip && !(crowding && crowded(r.stem)); }
+
   // Whether two runs' quads are to be tested: of two stems, one flagged, with a quad in a neck or a bearing tip.
-  auto searched = [&](const Run& x, const Run& y) {
+  // Fewer pairs pass with crowding than without, and fewer as more stems are crowded.
+  bool searched(const Skeleton& skeleton, const Run& x, const Run& y, bool crowding) const {
     if (x.stem < 0 || y.stem < 0 || !(marked(x.stem) || marked(y.stem))) return false;
-    if (!(x.neck || y.neck || x.tip || y.tip)) return false;
-    if (x.stem == y.stem) return x.neck || y.neck;  // a neck through its own stem's tube
+    const bool xn = neckLive(x, crowding), yn = neckLive(y, crowding);
+    if (!(xn || yn || tipLive(x, crowding) || tipLive(y, crowding))) return false;
+    if (x.stem == y.stem) return xn || yn;  // a neck through its own stem's tube
     const StemRelation relation = relationOf(skeleton, x.stem, y.stem);
     if (relation == StemRelation::CloneSource) return false;
     // Against its parent, only a child's own neck: the parent's long neck runs along its children's tubes.
-    return relation != StemRelation::ParentChild || (skeleton.stems[static_cast<std::size_t>(x.stem)].parentStem == y.stem ? x.neck : y.neck);
-  };
-  // The run pairs to search, and per stem how many runs of others its neck (or tip) meets: a crowded one is then
-  // searched no more, which keeps the search linear in the stems where a thicket would make it quadratic.
-  const unsigned threads = threadsFor(runs.size(), kThreadsFrom / kRunQuads);
-  std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> runPairs(threads);
-  std::vector<std::vector<std::uint32_t>> met(threads, std::vector<std::uint32_t>(skeleton.stems.size(), 0));
-  overlappingPairs(buildQuadBvh(runBoxes), threads, [&](std::uint32_t i, std::uint32_t j, unsigned t) {
-    if (!searched(runs[i], runs[j])) return;
-    runPairs[t].emplace_back(i, j);
-    if (runs[i].stem == runs[j].stem) return;
-    for (const Run* r : {&runs[i], &runs[j]}) met[t][static_cast<std::size_t>(r->stem)] += r->neck || r->tip ? 1 : 0;
-  });
-  for (std::size_t t = 1; t < threads; ++t) {
-    for (std::size_t s = 0; s < met[0].size(); ++s) met[0][s] += met[t][s];
-    runPairs[0].insert(runPairs[0].end(), runPairs[t].begin(), runPairs[t].end());
+    return relation != StemRelation::ParentChild || (skeleton.stems[static_cast<std::size_t>(x.stem)].parentStem == y.stem ? xn : yn);
   }
-  for (Run& r : runs) {
-    const bool crowded = r.stem >= 0 && met[0][static_cast<std::size_t>(r.stem)] > kCrowdedNeck;
-    r.neck = r.neck && !crowded;
-    r.tip = r.tip && !crowded;
+  // A run's neck against itself: its own neck folding through itself.
+  bool searchedAlone(const Run& r, bool crowding) const { return neckLive(r, crowding) && marked(r.stem); }
+
+  // The cross sections up to `to.rings`: which vertices lie on necks and bearing tips. A stem's cross sections all
+  // come in one part, on vertices of that part: else an earlier part's quads would change.
+  void settleRings(const TreeMesh& tree, const MeshProgress& to) {
+    neckOf.resize(to.vertices, -1);
+    tipOf.resize(to.vertices, -1);
+    const int part = static_cast<int>(parts.size());
+    std::vector<int> touched;  // stems with a cross section on their skeleton here, and the last such of each
+    std::vector<std::size_t> lastOf(ringPart.size(), SIZE_MAX);
+    for (std::size_t r = done.rings; r < to.rings; ++r) {
+      const MeshRing& ring = tree.rings[r];
+      if (ring.stem < 0) continue;
+      const auto stem = static_cast<std::size_t>(ring.stem);
+      bool inPart = stem < ringPart.size();
+      for (std::uint32_t v : ring.vertices) inPart = inPart && v >= done.vertices && v < to.vertices;
+      if (!inPart || (ringPart[stem] >= 0 && ringPart[stem] != part)) {
+        whole = false;
+        return;
+      }
+      ringPart[stem] = part;
+      if (neckRing(ring, pastNeck))
+        for (std::uint32_t v : ring.vertices) neckOf[v] = ring.stem;
+      if (ring.arc >= 0.0) {
+        if (lastOf[stem] == SIZE_MAX) touched.push_back(ring.stem);
+        lastOf[stem] = r;
+      }
+    }
+    std::sort(touched.begin(), touched.end());  // a later stem's tip wins a shared corner, as over the whole mesh
+    for (int s : touched) {
+      if (!bearing[static_cast<std::size_t>(s)]) continue;
+      for (std::uint32_t v : tree.rings[lastOf[static_cast<std::size_t>(s)]].vertices) tipOf[v] = s;
+    }
   }
-  std::erase_if(runPairs[0], [&](const auto& p) { return !searched(runs[p.first], runs[p.second]); });
-  // A flagged stem's neck run against itself: its own neck folding through itself.
-  for (std::uint32_t r = 0; r < runs.size(); ++r) {
-    if (runs[r].neck && marked(runs[r].stem)) runPairs[0].emplace_back(r, r);
+
+  // The quads up to `to.quads`: their boxes, flags and runs (the last run stays open for the next quads).
+  void settleQuads(const TreeMesh& tree, const MeshProgress& to) {
+    const QuadMesh& mesh = tree.mesh;
+    for (auto f = static_cast<std::uint32_t>(done.quads); f < to.quads; ++f) {
+      const int stem = tree.quadStem[f];
+      const auto& q = mesh.quads[f];
+      bool known = true;
+      for (std::uint32_t v : q) known = known && v < to.vertices;
+      if (!known) {
+        whole = false;
+        return;
+      }
+      quadBoxes.push_back(boxOf(mesh, f));
+      // One write a quad: a bit of vector<bool> read and written per corner cost the tupelo file 1.2 % of its instructions.
+      auto on = [&](const std::vector<int>& ringOf) {
+        return stem >= 0 && (ringOf[q[0]] == stem || ringOf[q[1]] == stem || ringOf[q[2]] == stem || ringOf[q[3]] == stem);
+      };
+      const bool inNeck = on(neckOf), onTip = on(tipOf);
+      neck.push_back(inNeck ? 1 : 0);
+      tip.push_back(onTip ? 1 : 0);
+      if (runs.empty() || runs.back().stem != stem || runs.back().neck != inNeck || runs.back().tip != onTip ||
+          runs.back().end - runs.back().begin == kRunQuads) {
+        runs.push_back(Run{f, f, stem, inNeck, onTip});
+        runBoxes.push_back(quadBoxes[f]);
+      }
+      runs.back().end = f + 1;
+      runBoxes.back().lo = glm::min(runBoxes.back().lo, quadBoxes[f].lo);
+      runBoxes.back().hi = glm::max(runBoxes.back().hi, quadBoxes[f].hi);
+    }
+    done = to;
   }
-  // Tests two runs' quads, each pair classified as it is found: only the mesh-made are kept.
-  auto search = [&](std::uint32_t i, std::uint32_t j, PairClassifier& classifier, std::vector<QuadPairHit>& found,
-                    std::array<QuadCorners, kRunQuads>& nearCorners) {
+
+  // The runs closed since the last part (all of them at the end) as a new part; false when there are none.
+  bool closePart(bool last) {
+    const auto end = static_cast<std::uint32_t>(last || runs.empty() ? runs.size() : runs.size() - 1);
+    if (end <= closedRuns) return false;
+    Part part;
+    part.firstRun = closedRuns;
+    part.endRun = end;
+    const std::vector<QuadBox> boxes(runBoxes.begin() + closedRuns, runBoxes.begin() + end);
+    part.box = boxes.front();
+    for (const QuadBox& b : boxes) part.box = QuadBox{glm::min(part.box.lo, b.lo), glm::max(part.box.hi, b.hi)};
+    part.bvh = buildQuadBvh(boxes);
+    parts.push_back(std::move(part));
+    closedRuns = end;
+    return true;
+  }
+
+  // Tests two runs' quads, each pair classified as it is found: only the pairs to mend are kept.
+  void search(const TreeMesh& tree, const Skeleton& skeleton, std::uint32_t i, std::uint32_t j, PairClassifier& classifier,
+              std::vector<QuadPairHit>& out, std::array<QuadCorners, kRunQuads>& nearCorners) const {
     const Run& x = runs[i];
     const Run& y = runs[j];
     // Only the quads of each run that reach into the other run's box can meet; their corners are read once.
@@ -457,29 +538,144 @@ std::vector<QuadPairHit> pairsToMendOf(const TreeMesh& tree, const Skeleton& ske
       if (quadBoxes[b].overlaps(runBoxes[i])) near[count++] = b;
     }
     if (count == 0) return;
-    for (std::size_t k = 0; k < count; ++k) nearCorners[k] = cornersOf(mesh, near[k]);
+    for (std::size_t k = 0; k < count; ++k) nearCorners[k] = cornersOf(tree.mesh, near[k]);
     for (std::uint32_t a = x.begin; a < x.end; ++a) {
       if (!quadBoxes[a].overlaps(runBoxes[j])) continue;
-      const QuadCorners ca = cornersOf(mesh, a);
+      const QuadCorners ca = cornersOf(tree.mesh, a);
       for (std::size_t k = 0; k < count; ++k) {
         const std::uint32_t b = near[k];
         if (i == j && b <= a) continue;
         if (!quadBoxes[a].overlaps(quadBoxes[b]) || shareCorner(ca.index, nearCorners[k].index)) continue;
-        keepIfToMend(ca, nearCorners[k], a, b, classifier, [&](const QuadPairHit& h) { return neckThroughParent(skeleton, neck, h); }, found);
+        keepIfToMend(ca, nearCorners[k], a, b, classifier, [&](const QuadPairHit& h) { return neckThroughParent(skeleton, neck, h); }, out);
       }
     }
+  }
+
+  // visit(i, j) for every two overlapping runs of the newest part, and of it and an earlier part, on `threads`.
+  template <class Visit>
+  void newestPairs(unsigned threads, Visit&& visit) const {
+    const Part& part = parts.back();
+    const std::vector<NodePair> within = splitOverlapTasks(part.bvh, threads == 1 ? 1 : 64 * threads);
+    std::vector<std::size_t> earlier;
+    for (std::size_t e = 0; e + 1 < parts.size(); ++e) {
+      if (parts[e].box.overlaps(part.box)) earlier.push_back(e);
+    }
+    inParallel(within.size() + earlier.size(), threads, [&](std::size_t k, unsigned t) {
+      if (k < within.size()) {
+        forEachOverlappingPair(part.bvh, within[k], [&](std::uint32_t i, std::uint32_t j) { visit(part.firstRun + i, part.firstRun + j, t); });
+        return;
+      }
+      const Part& other = parts[earlier[k - within.size()]];
+      forEachOverlappingPair(part.bvh, other.bvh, [&](std::uint32_t i, std::uint32_t j) { visit(part.firstRun + i, other.firstRun + j, t); });
+    });
+  }
+};
+
+PairsToMendSearch::PairsToMendSearch() = default;
+PairsToMendSearch::~PairsToMendSearch() = default;
+PairsToMendSearch::PairsToMendSearch(PairsToMendSearch&&) noexcept = default;
+PairsToMendSearch& PairsToMendSearch::operator=(PairsToMendSearch&&) noexcept = default;
+
+void PairsToMendSearch::advance(const TreeMesh& tree, const Skeleton& skeleton, const MeshProgress& settled) {
+  if (!state_) state_ = std::make_unique<State>(skeleton, std::vector<bool>(skeleton.stems.size(), true));
+  State& st = *state_;
+  if (!st.whole) return;
+  st.settleRings(tree, settled);
+  if (st.whole) st.settleQuads(tree, settled);
+  if (!st.whole || !st.closePart(false)) return;
+  ++st.partsAdvanced;
+  // Pairs are searched as they are found, skipping stems already crowded; finish() drops those that crowding at the
+  // end would not have searched.
+  PairClassifier classifier(tree, skeleton, settled.quads);
+  std::array<QuadCorners, kRunQuads> corners;
+  std::vector<QuadPairHit> hits;
+  auto keep = [&](std::uint32_t i, std::uint32_t j) {
+    hits.clear();
+    st.search(tree, skeleton, i, j, classifier, hits, corners);
+    for (const QuadPairHit& h : hits) st.found.push_back(State::Found{h, i, j});
   };
+  st.newestPairs(1, [&](std::uint32_t i, std::uint32_t j, unsigned) {
+    const State::Run& x = st.runs[i];
+    const State::Run& y = st.runs[j];
+    if (!st.searched(skeleton, x, y, false)) return;
+    if (x.stem != y.stem)
+      for (const State::Run* r : {&x, &y}) st.met[static_cast<std::size_t>(r->stem)] += r->neck || r->tip ? 1 : 0;
+    if (st.searched(skeleton, x, y, true)) keep(i, j);
+  });
+  for (std::uint32_t r = st.parts.back().firstRun; r < st.parts.back().endRun; ++r) {
+    if (st.searchedAlone(st.runs[r], true)) keep(r, r);
+  }
+}
+
+namespace {
+
+// The rest of a search (all of it, when nothing was searched before): the last part's pairs, crowding, and the
+// pairs found before that crowding keeps.
+std::vector<QuadPairHit> finishSearch(PairsToMendSearch::State& st, const TreeMesh& tree, const Skeleton& skeleton) {
+  using State = PairsToMendSearch::State;
+  const MeshProgress all{std::min(tree.mesh.quads.size(), tree.quadStem.size()), tree.mesh.vertexCount(), tree.rings.size()};
+  st.settleRings(tree, all);
+  if (st.whole) st.settleQuads(tree, all);
+  if (!st.whole) return {};
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+  const std::uint32_t firstNew = st.closedRuns;
+  const unsigned threads = threadsFor(st.runs.size() - firstNew, kThreadsFrom / kRunQuads);
+  if (st.closePart(true)) {
+    // The run pairs to search, and per stem how many runs of others its neck (or tip) meets.
+    std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> runPairs(threads);
+    std::vector<std::vector<std::uint32_t>> met(threads, std::vector<std::uint32_t>(st.met.size(), 0));
+    st.newestPairs(threads, [&](std::uint32_t i, std::uint32_t j, unsigned t) {
+      const State::Run& x = st.runs[i];
+      const State::Run& y = st.runs[j];
+      if (!st.searched(skeleton, x, y, false)) return;
+      runPairs[t].emplace_back(i, j);
+      if (x.stem == y.stem) return;
+      for (const State::Run* r : {&x, &y}) met[t][static_cast<std::size_t>(r->stem)] += r->neck || r->tip ? 1 : 0;
+    });
+    for (std::size_t t = 0; t < threads; ++t) {
+      for (std::size_t s = 0; s < st.met.size(); ++s) st.met[s] += met[t][s];
+      pairs.insert(pairs.end(), runPairs[t].begin(), runPairs[t].end());
+    }
+  }
+  std::erase_if(pairs, [&](const auto& p) { return !st.searched(skeleton, st.runs[p.first], st.runs[p.second], true); });
+  for (std::uint32_t r = firstNew; r < st.runs.size(); ++r) {
+    if (st.searchedAlone(st.runs[r], true)) pairs.emplace_back(r, r);
+  }
   std::vector<PairClassifier> classifiers(threads, PairClassifier(tree, skeleton));
   std::vector<std::vector<QuadPairHit>> hits(threads);
   std::vector<std::array<QuadCorners, kRunQuads>> corners(threads);  // per thread: the near quads' corners
   constexpr std::size_t kChunk = 64;  // run pairs a thread takes at once
-  const std::vector<std::pair<std::uint32_t, std::uint32_t>>& pairs = runPairs[0];
   inParallel((pairs.size() + kChunk - 1) / kChunk, threads, [&](std::size_t c, unsigned t) {
     for (std::size_t k = c * kChunk; k < std::min(pairs.size(), (c + 1) * kChunk); ++k) {
-      search(pairs[k].first, pairs[k].second, classifiers[t], hits[t], corners[t]);
+      st.search(tree, skeleton, pairs[k].first, pairs[k].second, classifiers[t], hits[t], corners[t]);
     }
   });
+  // Pairs found before the last part, where the crowding now known still searches their runs.
+  for (const State::Found& f : st.found) {
+    const bool alone = f.x == f.y;
+    if (alone ? st.searchedAlone(st.runs[f.x], true) : st.searched(skeleton, st.runs[f.x], st.runs[f.y], true)) hits[0].push_back(f.hit);
+  }
   return gathered(hits);
+}
+
+}  // namespace
+
+std::vector<QuadPairHit> PairsToMendSearch::finish(const TreeMesh& tree, const Skeleton& skeleton) {
+  const std::vector<bool> every(skeleton.stems.size(), true);
+  if (state_ && state_->whole) {
+    std::vector<QuadPairHit> hits = finishSearch(*state_, tree, skeleton);
+    if (state_->whole) return hits;
+  }
+  // A part broke its promise: the whole mesh at once.
+  state_ = std::make_unique<State>(skeleton, every);
+  return finishSearch(*state_, tree, skeleton);
+}
+
+bool PairsToMendSearch::searchedInParts() const { return state_ && state_->whole && state_->partsAdvanced > 0; }
+
+std::vector<QuadPairHit> pairsToMendOf(const TreeMesh& tree, const Skeleton& skeleton, const std::vector<bool>& stems) {
+  PairsToMendSearch::State st(skeleton, stems);
+  return finishSearch(st, tree, skeleton);
 }
 
 std::vector<QuadPairHit> pairsToMendWith(const TreeMesh& tree, const Skeleton& skeleton, const std::vector<std::uint32_t>& quads) {

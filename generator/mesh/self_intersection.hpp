@@ -2,7 +2,9 @@
 // Every pair of quads of one mesh that intersect (beyond the corners and edges they share), found over a
 // bounding-volume hierarchy, and whether each was made by the skeleton (Weber-Penn lets branches cross) or
 // by the mesher (necks through their parent, folds, bands cutting others): the latter are bugs.
+#include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "growth/skeleton.hpp"
@@ -71,6 +73,35 @@ SelfIntersectionReport checkSelfIntersections(const TreeMesh& tree, const Skelet
 // would grow with the square of the stems). Over a BVH of runs of each stem's quads, on every core for a large
 // mesh, keeping only those pairs as it goes: cheap enough to run after every build.
 std::vector<QuadPairHit> pairsToMendOf(const TreeMesh& tree, const Skeleton& skeleton, const std::vector<bool>& stems);
+
+// How much of a mesh being built is final: its first `quads` quads, `vertices` vertices and `rings` cross sections.
+struct MeshProgress {
+  std::size_t quads = 0, vertices = 0, rings = 0;
+};
+
+// pairsToMendOf with every stem flagged, fed a mesh while the mesher builds it: the mesher only appends quads,
+// vertices and cross sections, so the parts it has finished are searched on another core while it builds the rest.
+class PairsToMendSearch {
+ public:
+  PairsToMendSearch();
+  ~PairsToMendSearch();
+  PairsToMendSearch(PairsToMendSearch&&) noexcept;
+  PairsToMendSearch& operator=(PairsToMendSearch&&) noexcept;
+
+  // The mesh up to `settled` is final, and so is every stem with a quad or cross section in it: searches that part
+  // against itself and the parts before it, on this thread. A part that breaks that promise (a stem's cross
+  // sections in two parts, or a cross section on an earlier part's vertex) makes finish() search the whole mesh.
+  void advance(const TreeMesh& tree, const Skeleton& skeleton, const MeshProgress& settled);
+  // The whole mesh is in: pairsToMendOf(tree, skeleton, every stem), the rest searched on every core.
+  std::vector<QuadPairHit> finish(const TreeMesh& tree, const Skeleton& skeleton);
+  // Whether parts were searched before finish() and kept advance()'s promise (else finish() searched the whole mesh).
+  bool searchedInParts() const;
+
+  struct State;
+
+ private:
+  std::unique_ptr<State> state_;
+};
 // The pairs to mend (as above) between one of `quads` (sorted; a few: the faces that closed twigs' ports) and any
 // other quad, classified as above, sorted.
 std::vector<QuadPairHit> pairsToMendWith(const TreeMesh& tree, const Skeleton& skeleton, const std::vector<std::uint32_t>& quads);
