@@ -2,6 +2,8 @@
 
 #include <system_error>
 
+#include "common/background_thread.hpp"
+
 namespace arbor {
 
 SearchBesideBuilder::SearchBesideBuilder(const TreeMesh& tree, const Skeleton& skeleton, PairsToMendSearch& search)
@@ -39,6 +41,7 @@ void SearchBesideBuilder::stop() {
 }
 
 void SearchBesideBuilder::run() {
+  runInBackground();
   for (;;) {
     MeshProgress part;
     {

@@ -7,6 +7,7 @@
 
 #include "asset_folder.hpp"
 #include "common/atomic_file.hpp"
+#include "common/background_thread.hpp"
 #include "common/input_error.hpp"
 #include "common/text_util.hpp"
 #include "export/gltf_export.hpp"
@@ -89,7 +90,9 @@ void writeTreeFile(const std::string& path, const Skeleton& skeleton, const std:
   std::future<std::shared_ptr<const ObjLeafLines>> leafLines;
   if (obj) {
     leafLines = std::async(std::launch::async,
-                           [&] { return printObjLeafLines(options.asset.leaves ? skeleton.leaves : noLeaves, options.file.up, [&] { return meshed.load(); }); });
+                           [&] {
+                             runInBackground();
+                             return printObjLeafLines(options.asset.leaves ? skeleton.leaves : noLeaves, options.file.up, [&] { return meshed.load(); }); });
   }
   struct Meshed {
     std::atomic<bool>& flag;
