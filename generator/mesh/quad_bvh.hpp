@@ -36,6 +36,33 @@ using NodePair = std::pair<std::uint32_t, std::uint32_t>;
 // The root's node pairs split into at least `count` independent tasks (fewer for a small tree), for threads.
 std::vector<NodePair> splitOverlapTasks(const QuadBvh& bvh, std::size_t count);
 
+namespace detail {
+
+// One step of a traversal of node x of `a` against node y of `b` (two different nodes when a is b): leaves' items
+// paired, or the larger inner node split onto `stack` (boxes shrink fastest that way).
+template <class Visit>
+void descendPair(const QuadBvh& a, const QuadBvh& b, std::uint32_t x, std::uint32_t y, std::vector<NodePair>& stack, Visit& visit) {
+  const QuadBvh::Node& nx = a.nodes[x];
+  const QuadBvh::Node& ny = b.nodes[y];
+  if (!nx.box.overlaps(ny.box)) return;
+  if (nx.count > 0 && ny.count > 0) {
+    for (std::uint32_t i = nx.first; i < nx.first + nx.count; ++i)
+      for (std::uint32_t j = ny.first; j < ny.first + ny.count; ++j)
+        if (a.itemBoxes[i].overlaps(b.itemBoxes[j])) visit(a.items[i], b.items[j]);
+    return;
+  }
+  const glm::vec3 ex = nx.box.hi - nx.box.lo, ey = ny.box.hi - ny.box.lo;
+  if (ny.count > 0 || (nx.count == 0 && ex.x + ex.y + ex.z >= ey.x + ey.y + ey.z)) {
+    stack.push_back({nx.first, y});
+    stack.push_back({nx.first + 1, y});
+  } else {
+    stack.push_back({x, ny.first});
+    stack.push_back({x, ny.first + 1});
+  }
+}
+
+}  // namespace detail
+
 // Calls visit(i, j) once for every two quads i != j under `task` whose boxes overlap (the tree against itself:
 // each pair once, not twice as a query per quad would).
 template <class Visit>
@@ -44,36 +71,19 @@ void forEachOverlappingPair(const QuadBvh& bvh, NodePair task, Visit&& visit) {
   while (!stack.empty()) {
     const auto [x, y] = stack.back();
     stack.pop_back();
-    const QuadBvh::Node& nx = bvh.nodes[x];
-    const QuadBvh::Node& ny = bvh.nodes[y];
-    if (x == y) {
-      if (nx.count > 0) {
-        for (std::uint32_t i = nx.first; i < nx.first + nx.count; ++i)
-          for (std::uint32_t j = i + 1; j < nx.first + nx.count; ++j)
-            if (bvh.itemBoxes[i].overlaps(bvh.itemBoxes[j])) visit(bvh.items[i], bvh.items[j]);
-      } else {
-        stack.push_back({nx.first, nx.first});
-        stack.push_back({nx.first + 1, nx.first + 1});
-        stack.push_back({nx.first, nx.first + 1});
-      }
+    if (x != y) {
+      detail::descendPair(bvh, bvh, x, y, stack, visit);
       continue;
     }
-    if (!nx.box.overlaps(ny.box)) continue;
-    if (nx.count > 0 && ny.count > 0) {
-      for (std::uint32_t i = nx.first; i < nx.first + nx.count; ++i)
-        for (std::uint32_t j = ny.first; j < ny.first + ny.count; ++j)
+    const QuadBvh::Node& n = bvh.nodes[x];
+    if (n.count > 0) {
+      for (std::uint32_t i = n.first; i < n.first + n.count; ++i)
+        for (std::uint32_t j = i + 1; j < n.first + n.count; ++j)
           if (bvh.itemBoxes[i].overlaps(bvh.itemBoxes[j])) visit(bvh.items[i], bvh.items[j]);
-      continue;
-    }
-    // Descend the inner node, the larger one when both are: boxes shrink fastest that way.
-    const glm::vec3 ex = nx.box.hi - nx.box.lo, ey = ny.box.hi - ny.box.lo;
-    const bool splitX = ny.count > 0 || (nx.count == 0 && ex.x + ex.y + ex.z >= ey.x + ey.y + ey.z);
-    if (splitX) {
-      stack.push_back({nx.first, y});
-      stack.push_back({nx.first + 1, y});
     } else {
-      stack.push_back({x, ny.first});
-      stack.push_back({x, ny.first + 1});
+      stack.push_back({n.first, n.first});
+      stack.push_back({n.first + 1, n.first + 1});
+      stack.push_back({n.first, n.first + 1});
     }
   }
 }
@@ -87,23 +97,7 @@ void forEachOverlappingPair(const QuadBvh& a, const QuadBvh& b, Visit&& visit) {
   while (!stack.empty()) {
     const auto [x, y] = stack.back();
     stack.pop_back();
-    const QuadBvh::Node& nx = a.nodes[x];
-    const QuadBvh::Node& ny = b.nodes[y];
-    if (!nx.box.overlaps(ny.box)) continue;
-    if (nx.count > 0 && ny.count > 0) {
-      for (std::uint32_t i = nx.first; i < nx.first + nx.count; ++i)
-        for (std::uint32_t j = ny.first; j < ny.first + ny.count; ++j)
-          if (a.itemBoxes[i].overlaps(b.itemBoxes[j])) visit(a.items[i], b.items[j]);
-      continue;
-    }
-    const glm::vec3 ex = nx.box.hi - nx.box.lo, ey = ny.box.hi - ny.box.lo;
-    if (ny.count > 0 || (nx.count == 0 && ex.x + ex.y + ex.z >= ey.x + ey.y + ey.z)) {
-      stack.push_back({nx.first, y});
-      stack.push_back({nx.first + 1, y});
-    } else {
-      stack.push_back({x, ny.first});
-      stack.push_back({x, ny.first + 1});
-    }
+    detail::descendPair(a, b, x, y, stack, visit);
   }
 }
 
