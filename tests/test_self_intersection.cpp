@@ -801,6 +801,27 @@ TEST_CASE("searched part by part as the mesher settles them, the pairs to mend a
   CHECK_FALSE(broken.searchedInParts());
 }
 
+TEST_CASE("a tree meshed with the crossing-twig search beside the mesher is the tree meshed without", "[mesh][self-intersection]") {
+  // Presets whose crossing-twig pass takes twigs out (the CA black oak, the palm) or leaves necks crossing (the willow).
+  struct Case {
+    const char* name;
+    std::uint64_t seed;
+  };
+  const Case tree = GENERATE(values<Case>({{"ca-black-oak", 1}, {"weeping-willow", 4}, {"palm", 2}, {"black-tupelo", 1}}));
+  INFO(tree.name << " at seed " << tree.seed);
+  GrowthOptions o;
+  o.seed = tree.seed;
+  const Skeleton skeleton = generateSkeleton(test::loadPreset(tree.name), o);
+  MeshOptions after, beside;
+  beside.searchBesideMesher = true;
+  const TreeMesh a = buildTreeMesh(skeleton, after);
+  const TreeMesh b = buildTreeMesh(skeleton, beside);
+  CHECK(a.mesh.quads == b.mesh.quads);
+  CHECK(a.mesh.positions == b.mesh.positions);
+  CHECK(a.quadStem == b.quadStem);
+  CHECK(a.fakedStems == b.fakedStems);
+}
+
 TEST_CASE("the BVH finds the same pairs as testing every pair, on a preset's mesh", "[mesh][self-intersection]") {
   const TreeMesh tree = test::meshOf("palm", 1);
   const auto fast = findIntersectingQuads(tree.mesh);

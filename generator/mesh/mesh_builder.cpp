@@ -2252,7 +2252,8 @@ TreeMesh buildWithTwigsFaked(const Skeleton& skeleton, const MeshOptions& option
     // Searching every stem (as when what is left is asked for), the crossing-twig search begins beside the mesher.
     const bool crossing = options.fakeDisplaced && options.fakeCrossingTwigs;
     PairsToMendSearch search;
-    TreeMesh out = buildOnce(skeleton, options, fake, collars, pass < kFarTwigPasses ? &far : nullptr, crossing && left ? &search : nullptr);
+    const bool beside = crossing && left && options.searchBesideMesher;
+    TreeMesh out = buildOnce(skeleton, options, fake, collars, pass < kFarTwigPasses ? &far : nullptr, beside ? &search : nullptr);
     bool changed = false;  // since the search beside began
     if (pass >= 1 && !far.empty() && takeOutTwigs(out, skeleton, far)) {
       far.clear();
@@ -2260,7 +2261,7 @@ TreeMesh buildWithTwigsFaked(const Skeleton& skeleton, const MeshOptions& option
     }
     if (pass == kFarTwigPasses || far.empty()) {
       // Last, the twigs whose quads still cross another stem's where the skeletons do not meet.
-      if (crossing) fakeCrossingTwigs(out, skeleton, left, left && !changed ? &search : nullptr);
+      if (crossing) fakeCrossingTwigs(out, skeleton, left, beside && !changed ? &search : nullptr);
       // Once, on the mesh as it leaves, after every twig taken out (neither take-out computes them here).
       if (out.mesh.normals.size() != out.mesh.positions.size()) computeNormals(out.mesh);
       return out;

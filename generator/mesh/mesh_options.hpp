@@ -39,6 +39,10 @@ struct MeshOptions {
   // twigs, with them) in a mesh-made pair at a neck or first band (its own or the other stem's), or at the tip of a
   // stem bearing children, is taken out of the built mesh and drawn as fake branches (crossing_twigs.hpp).
   bool fakeCrossingTwigs = true;
+  // The crossing-twig search on another core while the mesher builds (PairsToMendSearch): one-shot exports turn it on
+  // (`arbor generate` and `grow`: the tupelo file 216 -> 195 ms). Off, it runs after the mesher: the viewer's tour
+  // drew its frames some 6 ms slower after a build with the thread (lavapipe, more page faults in its frames).
+  bool searchBesideMesher = false;
 };
 
 }  // namespace arbor

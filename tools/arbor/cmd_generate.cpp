@@ -67,7 +67,9 @@ int runGenerate(const GenerateOptions& o) {
   if (type == OutputType::Skeleton && o.exported.up != "y") {
     throw InputError(o.out, "--up", "applies to .obj only (glTF is y up by its specification; the skeleton keeps Arbor's z up)");
   }
-  const TreeFileOptions fileOptions = type == OutputType::Skeleton ? TreeFileOptions{} : treeFileOptions(o.out, o.exported, o.mesh, o.subdivide);
+  MeshOptions mesh = o.mesh;
+  mesh.searchBesideMesher = true;  // a one-shot export: nothing draws frames after the build
+  const TreeFileOptions fileOptions = type == OutputType::Skeleton ? TreeFileOptions{} : treeFileOptions(o.out, o.exported, mesh, o.subdivide);
   ImportNotes notes;
   const TreeSource source = loadTreeArgument(o.species, &notes, o.angles);
   if (!o.quiet) printNotes(o.species, notes);
@@ -88,7 +90,7 @@ int runGenerate(const GenerateOptions& o) {
   // itself while it makes the cards on another core.
   const bool meshHere = !o.quiet && type != OutputType::Skeleton;
   if (meshHere) {
-    tree = buildTree(skeleton, BuildOptions{o.mesh, false}).mesh;  // patches are counted on another core below
+    tree = buildTree(skeleton, BuildOptions{mesh, false}).mesh;  // patches are counted on another core below
     meshMs = ms(t1, Clock::now());
   }
   // The summary's topology and patch counts are worked out on another core while the file is written.

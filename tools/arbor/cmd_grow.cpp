@@ -94,7 +94,9 @@ int runGrow(const GrowOptions& o) {
   } else {
     // The tree build stage every command uses, as `arbor generate` meshes a model grown to the end.
     const Skeleton skeleton = colonizationSkeleton(colonizer, model, o.seed, limits);
-    const auto tree = std::make_shared<const TreeMesh>(buildTree(skeleton, BuildOptions{{}, false}).mesh);
+    MeshOptions mesh;
+    mesh.searchBesideMesher = true;  // a one-shot export, as in `arbor generate`
+    const auto tree = std::make_shared<const TreeMesh>(buildTree(skeleton, BuildOptions{mesh, false}).mesh);
     writeTreeFile(o.out, skeleton, model.name, fileOptions, tree);
     written = std::to_string(tree->mesh.quads.size()) + " quads";
   }
