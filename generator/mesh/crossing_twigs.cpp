@@ -332,10 +332,14 @@ std::size_t fakeCrossingTwigs(TreeMesh& tree, const Skeleton& skeleton, Crossing
   const std::vector<int> root = familyRoots(skeleton);
   // One search, for every stem that is a twig or becomes one once its twigs are taken out (or every stem, to say
   // what is left): the second pass only looks again at the pairs found.
-  const std::vector<int> deepTwigs = twigsOf(tree, skeleton, root, kMaxHeight + 1);
-  std::vector<bool> deep(deepTwigs.size());
-  for (std::size_t i = 0; i < deep.size(); ++i) deep[i] = left || deepTwigs[i] >= 0;
-  std::vector<QuadPairHit> hits = left && begun ? begun->finish(tree, skeleton) : pairsToMendOf(tree, skeleton, deep);
+  auto flagged = [&] {
+    std::vector<bool> deep(skeleton.stems.size(), true);
+    if (left) return deep;  // every stem: no twigs to work out
+    const std::vector<int> deepTwigs = twigsOf(tree, skeleton, root, kMaxHeight + 1);
+    for (std::size_t i = 0; i < deep.size(); ++i) deep[i] = deepTwigs[i] >= 0;
+    return deep;
+  };
+  std::vector<QuadPairHit> hits = left && begun ? begun->finish(tree, skeleton) : pairsToMendOf(tree, skeleton, flagged());
   auto meshMade = [](const QuadPairHit& h) { return h.origin == PairOrigin::Mesh; };
   std::size_t taken = 0;
   for (int pass = 0; pass < kPasses && std::any_of(hits.begin(), hits.end(), meshMade); ++pass) {

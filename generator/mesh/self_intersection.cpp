@@ -244,14 +244,14 @@ void keepIfToMend(const QuadCorners& cf, const QuadCorners& cg, std::uint32_t f,
 
 // Per quad, whether one of its corners lies on a cross section of its own stem marked in `ringOf` (per vertex, the
 // stem whose marked cross section it is on; -1 for none).
+bool onOwnRing(const std::array<std::uint32_t, 4>& q, int stem, const std::vector<int>& ringOf) {
+  return stem >= 0 && (ringOf[q[0]] == stem || ringOf[q[1]] == stem || ringOf[q[2]] == stem || ringOf[q[3]] == stem);
+}
+
 std::vector<bool> quadsOnOwnRings(const TreeMesh& tree, const std::vector<int>& ringOf) {
   std::vector<bool> on(tree.mesh.quads.size(), false);
-  for (std::size_t f = 0; f < on.size() && f < tree.quadStem.size(); ++f) {
-    const int stem = tree.quadStem[f];
-    const auto& q = tree.mesh.quads[f];
-    // One write a quad: a bit of vector<bool> read and written per corner cost the tupelo file 1.2 % of its instructions.
-    on[f] = stem >= 0 && (ringOf[q[0]] == stem || ringOf[q[1]] == stem || ringOf[q[2]] == stem || ringOf[q[3]] == stem);
-  }
+  // One write a quad: a bit of vector<bool> read and written per corner cost the tupelo file 1.2 % of its instructions.
+  for (std::size_t f = 0; f < on.size() && f < tree.quadStem.size(); ++f) on[f] = onOwnRing(tree.mesh.quads[f], tree.quadStem[f], ringOf);
   return on;
 }
 
@@ -404,6 +404,7 @@ struct PairsToMendSearch::State {
   std::vector<int> neckOf, tipOf;  // per vertex: the stem whose neck (or bearing tip) cross section it is on, or -1
   std::vector<bool> pastNeck;      // per stem: a cross section on its skeleton seen
   std::vector<int> ringPart;       // per stem: the part its cross sections came in, or -1
+  std::vector<std::size_t> lastArcRing;  // per stem, within settleRings: its last cross section on its skeleton
   std::vector<bool> bearing;       // per stem: it has children
   std::vector<QuadBox> quadBoxes;
   std::vector<std::uint8_t> neck, tip;  // per quad: in its stem's neck (or first band), on a bearing tip
@@ -452,7 +453,7 @@ struct PairsToMendSearch::State {
     tipOf.resize(to.vertices, -1);
     const int part = static_cast<int>(parts.size());
     std::vector<int> touched;  // stems with a cross section on their skeleton here, and the last such of each
-    std::vector<std::size_t> lastOf(ringPart.size(), SIZE_MAX);
+    lastArcRing.resize(ringPart.size(), SIZE_MAX);
     for (std::size_t r = done.rings; r < to.rings; ++r) {
       const MeshRing& ring = tree.rings[r];
       if (ring.stem < 0) continue;
@@ -467,14 +468,16 @@ struct PairsToMendSearch::State {
       if (neckRing(ring, pastNeck))
         for (std::uint32_t v : ring.vertices) neckOf[v] = ring.stem;
       if (ring.arc >= 0.0) {
-        if (lastOf[stem] == SIZE_MAX) touched.push_back(ring.stem);
-        lastOf[stem] = r;
+        if (lastArcRing[stem] == SIZE_MAX) touched.push_back(ring.stem);
+        lastArcRing[stem] = r;
       }
     }
     std::sort(touched.begin(), touched.end());  // a later stem's tip wins a shared corner, as over the whole mesh
     for (int s : touched) {
-      if (!bearing[static_cast<std::size_t>(s)]) continue;
-      for (std::uint32_t v : tree.rings[lastOf[static_cast<std::size_t>(s)]].vertices) tipOf[v] = s;
+      const auto stem = static_cast<std::size_t>(s);
+      if (bearing[stem])
+        for (std::uint32_t v : tree.rings[lastArcRing[stem]].vertices) tipOf[v] = s;
+      lastArcRing[stem] = SIZE_MAX;  // clean for the next part: one array for all parts, not one a part
     }
   }
 
@@ -491,11 +494,7 @@ struct PairsToMendSearch::State {
         return;
       }
       quadBoxes.push_back(boxOf(mesh, f));
-      // One write a quad: a bit of vector<bool> read and written per corner cost the tupelo file 1.2 % of its instructions.
-      auto on = [&](const std::vector<int>& ringOf) {
-        return stem >= 0 && (ringOf[q[0]] == stem || ringOf[q[1]] == stem || ringOf[q[2]] == stem || ringOf[q[3]] == stem);
-      };
-      const bool inNeck = on(neckOf), onTip = on(tipOf);
+      const bool inNeck = onOwnRing(q, stem, neckOf), onTip = onOwnRing(q, stem, tipOf);
       neck.push_back(inNeck ? 1 : 0);
       tip.push_back(onTip ? 1 : 0);
       if (runs.empty() || runs.back().stem != stem || runs.back().neck != inNeck || runs.back().tip != onTip ||
@@ -661,13 +660,12 @@ std::vector<QuadPairHit> finishSearch(PairsToMendSearch::State& st, const TreeMe
 }  // namespace
 
 std::vector<QuadPairHit> PairsToMendSearch::finish(const TreeMesh& tree, const Skeleton& skeleton) {
-  const std::vector<bool> every(skeleton.stems.size(), true);
   if (state_ && state_->whole) {
     std::vector<QuadPairHit> hits = finishSearch(*state_, tree, skeleton);
     if (state_->whole) return hits;
   }
   // A part broke its promise: the whole mesh at once.
-  state_ = std::make_unique<State>(skeleton, every);
+  state_ = std::make_unique<State>(skeleton, std::vector<bool>(skeleton.stems.size(), true));
   return finishSearch(*state_, tree, skeleton);
 }
 
