@@ -2,7 +2,9 @@
 // each attachment, natural-rule radii, and the primary deflection applied to relative transforms.
 #include <algorithm>
 #include <cmath>
+#include <thread>
 
+#include "common/parallel.hpp"
 #include "weber_penn.hpp"
 
 namespace arbor {
@@ -186,13 +188,23 @@ class Builder {
     out_.stems.push_back(std::move(stem));
   }
 
-  // Leaves hang from the last node at or below them on their stem, so they follow its deflections.
+  // Leaves hang from the last node at or below them on their stem, so they follow its deflections. A needle tree's
+  // hundred thousand and more are placed in runs shared by the cores (the larch file's took 12 of its 45 ms).
   void addLeaves() {
-    out_.leaves.reserve(raw_.leaves.size());
+    out_.leaves.resize(raw_.leaves.size());
+    constexpr std::size_t kRun = 8192;
+    const std::size_t runs = (raw_.leaves.size() + kRun - 1) / kRun;
+    const unsigned threads = runs < 4 ? 1u : std::clamp(std::thread::hardware_concurrency(), 1u, 8u);
+    inParallel(runs, threads, [&](std::size_t r, unsigned) { placeLeaves(r * kRun, std::min(raw_.leaves.size(), (r + 1) * kRun)); });
+  }
+
+  // Leaves [from, to). A run may start within a stem: its walk starts afresh there and ends on the same node.
+  void placeLeaves(std::size_t from, std::size_t to) {
     int cursorStem = -1, cursor = -1;  // leaves of a stem arrive in z order: walk its nodes once
     int deltaNode = -1;
     Transform delta;
-    for (const RawLeaf& rl : raw_.leaves) {
+    for (std::size_t li = from; li < to; ++li) {
+      const RawLeaf& rl = raw_.leaves[li];
       const RawStem& st = raw_.stems[static_cast<std::size_t>(rl.stem)];
       const SkeletonStem& stem = out_.stems[static_cast<std::size_t>(rl.stem)];
       if (rl.stem != cursorStem || (cursor >= stem.firstNode && out_.nodes[static_cast<std::size_t>(cursor)].offset > rl.z)) {
@@ -230,7 +242,7 @@ class Builder {
       leaf.length = rl.length;
       leaf.width = rl.width;
       leaf.kind = static_cast<std::uint8_t>(p_.leafShape);
-      out_.leaves.push_back(leaf);
+      out_.leaves[li] = leaf;
     }
   }
 };
