@@ -1,5 +1,6 @@
 #pragma once
 // A loop over count items shared by a few threads, for work whose items differ widely in cost.
+#include <algorithm>
 #include <atomic>
 #include <cstddef>
 #include <exception>
@@ -36,6 +37,15 @@ void inParallel(std::size_t count, unsigned threads, Task&& task) {
   work(0);
   for (std::thread& t : pool) t.join();
   if (failure) std::rethrow_exception(failure);
+}
+
+// task(begin, end) for consecutive runs of `run` of count items, shared by the cores where there are four runs or
+// more (fewer are not worth starting threads for).
+template <class Task>
+void inParallelRuns(std::size_t count, std::size_t run, Task&& task) {
+  const std::size_t runs = (count + run - 1) / run;
+  const unsigned threads = runs < 4 ? 1u : std::clamp(std::thread::hardware_concurrency(), 1u, 8u);
+  inParallel(runs, threads, [&](std::size_t r, unsigned) { task(r * run, std::min(count, (r + 1) * run)); });
 }
 
 }  // namespace arbor

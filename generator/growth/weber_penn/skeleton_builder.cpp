@@ -2,7 +2,6 @@
 // each attachment, natural-rule radii, and the primary deflection applied to relative transforms.
 #include <algorithm>
 #include <cmath>
-#include <thread>
 
 #include "common/parallel.hpp"
 #include "weber_penn.hpp"
@@ -192,10 +191,7 @@ class Builder {
   // hundred thousand and more are placed in runs shared by the cores (the larch file's took 12 of its 45 ms).
   void addLeaves() {
     out_.leaves.resize(raw_.leaves.size());
-    constexpr std::size_t kRun = 8192;
-    const std::size_t runs = (raw_.leaves.size() + kRun - 1) / kRun;
-    const unsigned threads = runs < 4 ? 1u : std::clamp(std::thread::hardware_concurrency(), 1u, 8u);
-    inParallel(runs, threads, [&](std::size_t r, unsigned) { placeLeaves(r * kRun, std::min(raw_.leaves.size(), (r + 1) * kRun)); });
+    inParallelRuns(raw_.leaves.size(), 8192, [&](std::size_t from, std::size_t to) { placeLeaves(from, to); });
   }
 
   // Leaves [from, to). A run may start within a stem: its walk starts afresh there and ends on the same node.
