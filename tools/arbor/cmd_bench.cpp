@@ -111,7 +111,7 @@ void addBenchCommand(CLI::App& app, Action& action) {
   CLI::App* bench = app.add_subcommand("bench", "Benchmarks that print figures (nothing is asserted).");
   bench->require_subcommand(1);
   auto o = std::make_shared<BenchOptions>();
-  CLI::App* gen = bench->add_subcommand("generate", "Time skeleton generation per preset (one thread).");
+  CLI::App* gen = bench->add_subcommand("generate", "Time skeleton generation per preset, one tree at a time (a Weber-Penn tree's leaves on every core).");
   gen->add_option("species", o->species, "Presets, or model, skeleton or graph files (default: every preset)");
   addAnglesOption(gen, o->angles);
   gen->add_option("--repeat", o->repeat, "Runs per species; the median and minimum are printed")
@@ -122,7 +122,7 @@ void addBenchCommand(CLI::App& app, Action& action) {
   gen->callback([o, &action] { action = [o] { return runBenchGenerate(*o); }; });
 
   auto m = std::make_shared<BenchOptions>();
-  CLI::App* mesh = bench->add_subcommand("mesh", "Time parameters (or a branch graph) -> skeleton -> mesh -> patches per preset (one thread).");
+  CLI::App* mesh = bench->add_subcommand("mesh", "Time parameters (or a branch graph) -> skeleton -> mesh -> patches per preset, one tree at a time (the mesher on one core; leaves and the self-intersection search on every core).");
   mesh->add_option("species", m->species, "Presets, or model, skeleton or graph files (default: every preset)");
   addAnglesOption(mesh, m->angles);
   mesh->add_option("--repeat", m->repeat, "Runs per species; medians are printed")->check(Whole(1, 1000))->capture_default_str();
