@@ -39,13 +39,18 @@ void inParallel(std::size_t count, unsigned threads, Task&& task) {
   if (failure) std::rethrow_exception(failure);
 }
 
+// How many threads `items` items are worth: one below `threadsFrom` (starting threads would cost more), else every
+// core.
+inline unsigned threadsFor(std::size_t items, std::size_t threadsFrom) {
+  return items < threadsFrom ? 1u : std::clamp(std::thread::hardware_concurrency(), 1u, 16u);
+}
+
 // task(begin, end) for consecutive runs of `run` of count items, shared by the cores where there are four runs or
-// more (fewer are not worth starting threads for).
+// more.
 template <class Task>
 void inParallelRuns(std::size_t count, std::size_t run, Task&& task) {
   const std::size_t runs = (count + run - 1) / run;
-  const unsigned threads = runs < 4 ? 1u : std::clamp(std::thread::hardware_concurrency(), 1u, 8u);
-  inParallel(runs, threads, [&](std::size_t r, unsigned) { task(r * run, std::min(count, (r + 1) * run)); });
+  inParallel(runs, threadsFor(runs, 4), [&](std::size_t r, unsigned) { task(r * run, std::min(count, (r + 1) * run)); });
 }
 
 }  // namespace arbor

@@ -5,7 +5,6 @@
 #include <chrono>
 #include <cstdint>
 #include <optional>
-#include <thread>
 #include <tuple>
 #include <unordered_map>
 
@@ -302,11 +301,6 @@ double millisecondsSince(std::chrono::steady_clock::time_point start) {
 }  // namespace
 
 namespace {
-
-// How many threads overlappingPairs takes for `items` items: one below `threadsFrom`, else every core.
-unsigned threadsFor(std::size_t items, std::size_t threadsFrom) {
-  return items < threadsFrom ? 1u : std::clamp(std::thread::hardware_concurrency(), 1u, 16u);
-}
 
 // The hits of all threads together, sorted.
 std::vector<QuadPairHit> gathered(std::vector<std::vector<QuadPairHit>>& found) {
