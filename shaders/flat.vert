@@ -1,6 +1,6 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-// The coarse mesh as it is (flat mode), and the input stage of PN-triangles.
+// The coarse mesh as it is (flat mode).
 
 #include "scene.glsl"
 #include "wind.glsl"

@@ -6,11 +6,9 @@
 #include "scene.glsl"
 #include "bark.glsl"
 
-layout(location = 0) in vec3 worldPosition;
-layout(location = 1) in vec2 acrossAndV;
-layout(location = 2) flat in vec3 sideways;
-layout(location = 3) flat in vec3 facing;
-layout(location = 4) in float radius;
+layout(location = 0) in vec2 acrossAndV;
+layout(location = 1) flat in vec3 sideways;
+layout(location = 2) flat in vec3 facing;
 
 layout(location = 0) out vec4 color;
 

@@ -7,11 +7,9 @@
 #include "wind.glsl"
 #include "card.glsl"
 
-layout(location = 0) out vec3 worldPosition;
-layout(location = 1) out vec2 acrossAndV;       // x: -1 .. 1 across the rectangle, y: bark texture v
-layout(location = 2) flat out vec3 sideways;    // unit vector across the rectangle
-layout(location = 3) flat out vec3 facing;      // unit vector from the axis towards the eye
-layout(location = 4) out float radius;
+layout(location = 0) out vec2 acrossAndV;       // x: -1 .. 1 across the rectangle, y: bark texture v
+layout(location = 1) flat out vec3 sideways;    // unit vector across the rectangle
+layout(location = 2) flat out vec3 facing;      // unit vector from the axis towards the eye
 
 void main() {
   uint index = cardIndex();
@@ -38,10 +36,9 @@ void main() {
   float r = atEnd ? segment.toRadius.w : segment.fromRadius.w;
   vec3 end = atEnd ? b + axis * (0.5 * r) : a - axis * (0.5 * r);
   float s = (corner & 1u) != 0u ? 1.0 : -1.0;
-  worldPosition = end + side * (r * s);
+  vec3 worldPosition = end + side * (r * s);
   acrossAndV = vec2(s, atEnd ? segment.barkV.y : segment.barkV.x);
   sideways = side;
   facing = front;
-  radius = r;
   gl_Position = scene.viewProj * vec4(worldPosition, 1.0);
 }

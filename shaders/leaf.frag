@@ -7,7 +7,7 @@
 #include "scene.glsl"
 
 layout(location = 0) in vec3 worldPosition;
-layout(location = 1) in vec3 worldNormal;
+layout(location = 1) flat in vec3 worldNormal;
 layout(location = 2) in vec2 atlasCoordinate;
 layout(location = 3) flat in float lightReaching;
 

@@ -9,7 +9,7 @@
 #include "card.glsl"
 
 layout(location = 0) out vec3 worldPosition;
-layout(location = 1) out vec3 worldNormal;
+layout(location = 1) flat out vec3 worldNormal;     // one per card
 layout(location = 2) out vec2 atlasCoordinate;
 layout(location = 3) flat out float lightReaching;  // 1: unshadowed, 0: behind another leaf
 
