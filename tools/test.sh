@@ -12,9 +12,11 @@ if [[ "${1:-}" == "--asan" ]]; then
     -DARBOR_SANITIZE=ON
   cmake --build "$root/build-asan" -j"$(nproc)"
   # Leaks are checked in Arbor's code only: the Vulkan driver, LLVM and X11 keep their own allocations for the
-  # process's life (tools/sanitizers/lsan.supp); keep_modules.so keeps them loaded so that reports can name them.
-  cc -shared -fPIC -O1 -o "$root/build-asan/keep_modules.so" "$root/tools/sanitizers/keep_modules.c"
-  export LD_PRELOAD="$root/build-asan/keep_modules.so"
+  # process's life (tools/sanitizers/lsan.supp); keep_modules.c keeps them loaded so that reports can name them,
+  # and grow_geometrically.c spares lavapipe's per-patch reallocations a copy each under ASan's allocator.
+  cc -shared -fPIC -O1 -o "$root/build-asan/sanitizer_preload.so" "$root/tools/sanitizers/keep_modules.c" \
+    "$root/tools/sanitizers/grow_geometrically.c" -ldl
+  export LD_PRELOAD="$root/build-asan/sanitizer_preload.so"
   export ASAN_OPTIONS="detect_leaks=1:abort_on_error=0:strict_string_checks=1:detect_stack_use_after_return=1:verify_asan_link_order=0"
   export LSAN_OPTIONS="suppressions=$root/tools/sanitizers/lsan.supp:print_suppressions=0"
   export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
