@@ -168,10 +168,12 @@ TEST_CASE("the viewer answers keys: F12 takes a screenshot, W moves the camera, 
 
 TEST_CASE("the viewer's panel answers the mouse: a click on 'leaves' hides them", "[view]") {
   // The panel follows the pointer from its events (window/overlay.cpp), not from questions to X11: xdotool moves
-  // the pointer onto the checkbox and clicks, press and release likely within one frame, then F12 shows the result.
+  // the pointer onto the checkbox, then clicks and presses F12 while the viewer is stopped, so that press, release
+  // and F12 come in one frame's events (a slow frame's case): the screenshot must wait for the click's effect.
   const std::string dir = freshDir("view-click");
   const Result r = runInWindow("view-click", "palm --size 800x600 --out " + dir,
-                               "xdotool mousemove --window \"$win\" --sync 27 426 click 1 key F12\n"  // the 'leaves' checkbox
+                               "xdotool mousemove --window \"$win\" --sync 27 426\n"  // the 'leaves' checkbox
+                               "kill -STOP $pid; xdotool click 1 key F12; kill -CONT $pid\n"
                                "waitfor 'frame-0002.png' || { kill $pid; exit 1; }");
   INFO(r.output);
   REQUIRE(r.exitCode == 0);

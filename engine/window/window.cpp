@@ -170,6 +170,10 @@ bool Window::mouseButtonPressed(int button) const {
   return std::find(buttonsPressed_.begin(), buttonsPressed_.end(), button) != buttonsPressed_.end();
 }
 
+bool Window::clickedWithinFrame() const {
+  return std::any_of(buttonsPressed_.begin(), buttonsPressed_.end(), [&](int button) { return !mouseButtonHeld(button); });
+}
+
 double Window::takeScroll() {
   const double s = gScroll;
   gScroll = 0.0;

@@ -54,6 +54,7 @@ class Window {
   bool focused() const { return focused_; }
   bool mouseButtonHeld(int button) const;
   bool mouseButtonPressed(int button) const;  // went down during the last pollEvents (a click shorter than a frame)
+  bool clickedWithinFrame() const;            // a button went down and up again during the last pollEvents
 
  private:
   static Window& self(GLFWwindow* window);  // the Window whose GLFW window an event came from

@@ -121,6 +121,7 @@ int runViewer(const ViewerOptions& o, ViewState& state, ViewerScene& scene) {
     render::FrameStats stats;
     auto last = std::chrono::steady_clock::now();
     int screenshotCount = 0;
+    bool screenshotWanted = false;  // F12 seen, picture not yet taken
     if (offscreen) {
       std::printf("arbor view: no window (%s); rendering %d frames offscreen on %s; %s\n", o.offscreen ? "--offscreen" : "no display", frames,
                   context.deviceDescription().c_str(), scene.summary().c_str());
@@ -159,7 +160,10 @@ int runViewer(const ViewerOptions& o, ViewState& state, ViewerScene& scene) {
         if (win->keyPressed(GLFW_KEY_F1)) state.showOverlay = !state.showOverlay;
         if (win->keyPressed(GLFW_KEY_F11)) win->toggleFullscreen();
         if (win->keyPressed(GLFW_KEY_TAB)) view = ViewCamera::lookingAt(view.camera(), !view.orbit);
-        screenshot = win->keyPressed(GLFW_KEY_F12);
+        // A click shorter than a frame reaches the panel as a press now and a release next frame (window/overlay.cpp):
+        // F12 with it waits for the frame that shows what the click did.
+        if (win->keyPressed(GLFW_KEY_F12)) screenshotWanted = true;
+        screenshot = screenshotWanted && !(state.showOverlay && win->clickedWithinFrame());
         view.update(walkInput(*win, *overlay), seconds, forest.radius() + forest.trees().front().crownRadius);
       }
       if (size.width != target->extent().width || size.height != target->extent().height) target->resize(size);
@@ -191,6 +195,7 @@ int runViewer(const ViewerOptions& o, ViewState& state, ViewerScene& scene) {
       state.frameTimes[state.frameIndex] = ms;
       state.frameIndex = (state.frameIndex + 1) % state.frameTimes.size();
       if (screenshot) {
+        screenshotWanted = false;
         const std::string name = screenshotName(o.out, scripted ? f + 1 : ++screenshotCount);
         try {
           fs::create_directories(o.out);
